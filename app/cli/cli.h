@@ -1,0 +1,23 @@
+// The `holefill` command line: parsing its arguments and running its subcommands, apart from
+// main() so that tests can drive it with argument vectors and captured streams.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace holefill::cli {
+
+// Exit codes, one per kind of outcome, so scripts can tell them apart.
+enum ExitCode : int {
+  kOk = 0,
+  kSomeHolesNotFilled = 1,  // output written, but at least one selected hole failed
+  kUsage = 2,               // bad arguments
+  kBadInput = 3,            // input file missing, unreadable or invalid
+  kWriteFailed = 4,         // output or report could not be written
+};
+
+// Runs `holefill ARGS...` (args excludes the program name); returns the exit code.
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+}  // namespace holefill::cli

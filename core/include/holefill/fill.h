@@ -1,0 +1,65 @@
+// The staged pipeline: triangulate -> refine -> smooth, one hole at a time or all at once.
+// A HoleFill is one hole's state; advance() runs its next stage, so a viewer can step through
+// the stages and inspect the patch in between, and fill_hole() runs them all.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "holefill/holes.h"
+#include "holefill/mesh.h"
+#include "holefill/patch.h"
+#include "holefill/refine.h"
+#include "holefill/smooth.h"
+#include "holefill/stats.h"
+#include "holefill/triangulate.h"
+
+namespace holefill {
+
+struct FillOptions {
+  TriangulateOptions triangulate;
+  RefineOptions refine;
+  SmoothOptions smooth;
+  Stage last_stage = Stage::Smoothed;  // fill_hole stops after this stage
+};
+
+struct StageTimes {
+  double triangulate_seconds = 0.0;
+  double refine_seconds = 0.0;
+  double smooth_seconds = 0.0;
+};
+
+// One hole's progress through the pipeline.
+struct HoleFill {
+  int hole_id = -1;
+  std::size_t boundary_edges = 0;
+  Patch patch;            // patch.stage is the last stage run (Original: not started)
+  std::string failure;    // set when a stage could not run; the mesh is then unchanged
+  PatchStats stats;       // after the last stage run
+  StageTimes times;
+  RefineResult refinement;
+
+  Stage stage() const { return patch.stage; }
+  bool failed() const { return !failure.empty(); }
+};
+
+// Runs the next stage on `fill` (which starts as HoleFill{} for `hole`). Returns false, with
+// fill.failure set, when the stage could not run; false without failure when all are done.
+bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options);
+
+// Runs the stages up to options.last_stage on one hole.
+HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options);
+
+// Which holes fill_holes takes: the listed ids (all when empty), and only those with at most
+// max_boundary_edges boundary edges (no limit when 0).
+struct HoleSelection {
+  std::vector<int> hole_ids;
+  std::size_t max_boundary_edges = 0;
+  bool includes(const Hole& hole) const;
+};
+
+// Fills the selected holes of `holes` (as find_holes gave them for this mesh), in order.
+std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
+                                 const FillOptions& options, const HoleSelection& selection = {});
+
+}  // namespace holefill

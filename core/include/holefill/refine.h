@@ -1,0 +1,37 @@
+// Step 2 of the paper: refining a patch to the density of the surrounding mesh (Liepa's
+// density interpolation, Sec. II, Step 2). Triangles are split at their centroid while
+// tau * |vc - vm| exceeds both sigma(vc) and sigma(vm) for every corner m, and interior patch
+// edges are swapped until they are locally Delaunay (opposite angles sum to at most pi).
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "holefill/mesh.h"
+#include "holefill/patch.h"
+
+namespace holefill {
+
+struct RefineOptions {
+  double tau = std::sqrt(2.0);  // density control factor; 1 <= tau <= sqrt(2) looks right
+  // Safety net for absurd inputs: refinement stops (and says so) past this many patch faces.
+  std::size_t max_patch_faces = 2'000'000;
+};
+
+struct RefineResult {
+  std::size_t splits = 0;
+  std::size_t swaps = 0;
+  bool stopped_at_face_limit = false;
+};
+
+// The scale sigma(v) of each boundary vertex: the mean length of its edges in the original mesh.
+void assign_boundary_scales(Mesh& mesh, const Patch& patch);
+
+// Refines the patch in place: adds vertices and faces (tagged Stage::Refined) and records them
+// in `patch`. Vertices and faces outside the patch are never changed.
+RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options = {});
+
+// Swaps interior patch edges until none should be swapped; returns the number of swaps.
+std::size_t relax_patch_edges(Mesh& mesh, const Patch& patch);
+
+}  // namespace holefill

@@ -1,0 +1,30 @@
+// Statistics of a patch, as the paper reports them (Table II, Fig. 6) and a user needs to judge
+// a patch: counts, the valence histogram of the patch's vertices, angles and area.
+#pragma once
+
+#include <map>
+
+#include "holefill/mesh.h"
+#include "holefill/patch.h"
+
+namespace holefill {
+
+struct PatchStats {
+  std::size_t new_vertices = 0;
+  std::size_t new_faces = 0;
+  std::map<int, std::size_t> valence_histogram;  // valence -> number of new patch vertices
+  double min_angle_deg = 0.0;       // smallest interior angle of any patch triangle
+  double mean_min_angle_deg = 0.0;  // mean over patch triangles of their smallest angle
+  double max_dihedral_deg = 0.0;    // over edges of patch faces, hole boundary included
+  double area = 0.0;
+};
+
+PatchStats patch_stats(const Mesh& mesh, const Patch& patch);
+
+// Valence histogram of every vertex of the mesh, for reference beside a patch's.
+std::map<int, std::size_t> valence_histogram(const Mesh& mesh);
+
+// Number of connected components (vertices joined by edges; isolated vertices count as one each).
+std::size_t connected_components(const Mesh& mesh);
+
+}  // namespace holefill

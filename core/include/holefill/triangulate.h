@@ -1,0 +1,81 @@
+// Step 1 of the paper: triangulating a hole's polygon by dynamic programming (Sec. II, Step 1).
+//   w(i,k) = min over i<m<k of w(i,m) + w(m,k) + Phi(i,m,k),   O(i,k) = the best m,
+// with the order and addition of the chosen weight (weights.h). Dihedral angles are taken
+// against the triangles chosen for the two sub-polygons and, on edges of the hole's boundary,
+// against the existing mesh face across that edge. Chords that already exist as mesh edges
+// are rejected, so every weight yields a manifold patch.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "holefill/holes.h"
+#include "holefill/mesh.h"
+#include "holefill/patch.h"
+#include "holefill/weights.h"
+
+namespace holefill {
+
+// The polygon P0 ... Pn-1 with what the dynamic program needs to know about its surroundings.
+struct HolePolygon {
+  std::vector<Point> points;
+  // outside_normals[i]: unit normal of the mesh face across edge (Pi, Pi+1 mod n); a zero
+  // vector where there is none (then that edge adds no dihedral angle).
+  std::vector<Point> outside_normals;
+  // Chords (i, k), i < k, that must not be used: they already exist as mesh edges, or join two
+  // occurrences of the same vertex.
+  std::vector<std::pair<int, int>> forbidden_chords;
+};
+
+struct TriangulateOptions {
+  WeightKind weight = WeightKind::MaxMin;
+  double angle_tolerance = kDefaultAngleTolerance;
+};
+
+// The weight's components for a whole triangulation, whatever the weight: the quantities the
+// paper's weights order, computed over all of the triangulation's triangles.
+struct TriangulationQuality {
+  double min_angle = 0.0;     // smallest interior angle of any triangle, radians
+  double max_dihedral = 0.0;  // largest dihedral over interior and hole-boundary edges, radians
+  double area = 0.0;
+  int degenerate = 0;
+};
+
+struct PolygonTriangulation {
+  // Triangles as polygon indices (i, m, k) with i < m < k, oriented like the hole's boundary.
+  std::vector<std::array<int, 3>> triangles;
+  TriangulationQuality quality;  // as the dynamic program accumulated it
+};
+
+// The optimal triangulation under options.weight, or nothing when the forbidden chords leave no
+// valid triangulation. The polygon needs at least 3 points.
+std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polygon,
+                                                        const TriangulateOptions& options);
+
+// The measures of triangle (a, b, c) that the weights use, except its dihedral angle.
+TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c);
+
+// Angle between two unit normals, radians; pi when either is zero (unknown orientation).
+double angle_between_normals(const Point& n1, const Point& n2);
+
+// Recomputes the quality of a given triangulation of `polygon` from scratch, edge by edge.
+TriangulationQuality evaluate_triangulation(const HolePolygon& polygon,
+                                            const std::vector<std::array<int, 3>>& triangles);
+
+// The hole's polygon as the dynamic program sees it: points, the normals of the faces across its
+// edges, and the chords that already exist in the mesh.
+HolePolygon hole_polygon(const Mesh& mesh, const Hole& hole);
+
+struct TriangulateHoleResult {
+  std::optional<Patch> patch;  // set when the hole was triangulated
+  std::string failure;         // why not, otherwise
+};
+
+// Triangulates the hole and adds the triangles to the mesh (tagged Stage::Triangulated). On
+// failure the mesh is left exactly as it was.
+TriangulateHoleResult triangulate_hole(Mesh& mesh, const Hole& hole,
+                                       const TriangulateOptions& options);
+
+}  // namespace holefill

@@ -1,0 +1,134 @@
+#include "holefill/refine.h"
+
+#include <unordered_set>
+
+namespace holefill {
+namespace {
+
+// An edge the refinement may swap: both its faces belong to this patch (so it is neither on the
+// hole's boundary nor in the original mesh), and the swapped edge does not exist yet.
+bool swappable(const Mesh& mesh, const std::unordered_set<int>& patch_faces, EdgeHandle e) {
+  const auto h0 = mesh.halfedge_handle(e, 0), h1 = mesh.halfedge_handle(e, 1);
+  const FaceHandle f0 = mesh.face_handle(h0), f1 = mesh.face_handle(h1);
+  if (!f0.is_valid() || !f1.is_valid()) return false;
+  if (!patch_faces.count(f0.idx()) || !patch_faces.count(f1.idx())) return false;
+  return mesh.is_flip_ok(e) && should_swap_edge(mesh, e);
+}
+
+// Bound on relaxation sweeps: non-planar Delaunay flipping terminates in practice, but a
+// pathological patch must not loop forever.
+constexpr int kMaxRelaxSweeps = 100;
+constexpr int kMaxRefineRounds = 200;
+
+std::size_t relax_edges(Mesh& mesh, const std::unordered_set<int>& patch_faces,
+                        const std::vector<FaceHandle>& faces) {
+  std::size_t swaps = 0;
+  for (int sweep = 0; sweep < kMaxRelaxSweeps; ++sweep) {
+    std::size_t swapped_now = 0;
+    for (const auto f : faces) {
+      // Copy the edges first: a swap relinks the face, which would derail a circulator.
+      EdgeHandle edges[3];
+      int count = 0;
+      for (const auto e : mesh.fe_range(f)) edges[count++] = e;
+      for (const auto e : edges) {
+        if (swappable(mesh, patch_faces, e)) {
+          mesh.flip(e);
+          ++swapped_now;
+        }
+      }
+    }
+    swaps += swapped_now;
+    if (swapped_now == 0) break;
+  }
+  return swaps;
+}
+
+std::unordered_set<int> face_ids(const Patch& patch) {
+  std::unordered_set<int> ids;
+  for (const auto f : patch.faces) ids.insert(f.idx());
+  return ids;
+}
+
+}  // namespace
+
+void assign_boundary_scales(Mesh& mesh, const Patch& patch) {
+  PatchTags tags(mesh);
+  const std::unordered_set<int> patch_faces = face_ids(patch);
+  for (const auto v : patch.boundary) {
+    double total = 0.0;
+    int count = 0;
+    for (const auto h : mesh.voh_range(v)) {
+      const FaceHandle left = mesh.face_handle(h);
+      const FaceHandle right = mesh.opposite_face_handle(h);
+      const bool original = (left.is_valid() && !patch_faces.count(left.idx())) ||
+                            (right.is_valid() && !patch_faces.count(right.idx()));
+      if (!original) continue;
+      total += mesh.calc_edge_length(h);
+      ++count;
+    }
+    mesh.property(tags.scale, v) = count ? total / count : 0.0;
+  }
+}
+
+std::size_t relax_patch_edges(Mesh& mesh, const Patch& patch) {
+  return relax_edges(mesh, face_ids(patch), patch.faces);
+}
+
+RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options) {
+  RefineResult result;
+  PatchTags tags(mesh);
+  assign_boundary_scales(mesh, patch);
+  std::unordered_set<int> patch_faces = face_ids(patch);
+  const double tau = options.tau;
+
+  for (int round = 0; round < kMaxRefineRounds; ++round) {
+    std::size_t splits_now = 0;
+    const std::vector<FaceHandle> faces = patch.faces;
+    for (const auto f : faces) {
+      if (patch.faces.size() + 2 > options.max_patch_faces) {
+        result.stopped_at_face_limit = true;
+        break;
+      }
+      VertexHandle corner[3];
+      int c = 0;
+      for (const auto v : mesh.fv_range(f)) corner[c++] = v;
+      const Point centroid =
+          (mesh.point(corner[0]) + mesh.point(corner[1]) + mesh.point(corner[2])) / 3.0;
+      const double centroid_scale = (mesh.property(tags.scale, corner[0]) +
+                                     mesh.property(tags.scale, corner[1]) +
+                                     mesh.property(tags.scale, corner[2])) / 3.0;
+      bool split = true;
+      for (const auto v : corner) {
+        const double reach = tau * (centroid - mesh.point(v)).norm();
+        if (!(reach > centroid_scale && reach > mesh.property(tags.scale, v))) split = false;
+      }
+      if (!split) continue;
+
+      std::vector<EdgeHandle> old_edges;
+      for (const auto e : mesh.fe_range(f)) old_edges.push_back(e);
+      const VertexHandle center = mesh.add_vertex(centroid);
+      mesh.split(f, center);
+      mesh.property(tags.scale, center) = centroid_scale;
+      mesh.property(tags.vertex_stage, center) = static_cast<std::uint8_t>(Stage::Refined);
+      patch.new_vertices.push_back(center);
+      for (const auto nf : mesh.vf_range(center)) {
+        if (patch_faces.insert(nf.idx()).second) patch.faces.push_back(nf);
+        mesh.property(tags.face_stage, nf) = static_cast<std::uint8_t>(Stage::Refined);
+      }
+      for (const auto e : old_edges) {
+        if (swappable(mesh, patch_faces, e)) {
+          mesh.flip(e);
+          ++result.swaps;
+        }
+      }
+      ++splits_now;
+    }
+    result.splits += splits_now;
+    if (splits_now == 0 || result.stopped_at_face_limit) break;
+    result.swaps += relax_edges(mesh, patch_faces, patch.faces);
+  }
+  patch.stage = Stage::Refined;
+  return result;
+}
+
+}  // namespace holefill

@@ -1,0 +1,79 @@
+#include "holefill/stats.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+#include <vector>
+
+#include "holefill/triangulate.h"
+
+namespace holefill {
+namespace {
+constexpr double kDegrees = 180.0 / M_PI;
+}
+
+PatchStats patch_stats(const Mesh& mesh, const Patch& patch) {
+  PatchStats stats;
+  stats.new_vertices = patch.new_vertices.size();
+  stats.new_faces = patch.faces.size();
+  for (const auto v : patch.new_vertices) ++stats.valence_histogram[mesh.valence(v)];
+
+  std::unordered_set<int> edges;
+  double min_angle = patch.faces.empty() ? 0.0 : M_PI, angle_sum = 0.0;
+  for (const auto f : patch.faces) {
+    auto fv = mesh.cfv_iter(f);
+    const Point& a = mesh.point(*fv);
+    const Point& b = mesh.point(*++fv);
+    const Point& c = mesh.point(*++fv);
+    const TriangleMeasures m = measure_triangle(a, b, c);
+    min_angle = std::min(min_angle, m.min_angle);
+    angle_sum += m.min_angle;
+    stats.area += m.area;
+    for (const auto e : mesh.fe_range(f)) edges.insert(e.idx());
+  }
+  double max_dihedral = 0.0;
+  for (const int id : edges) {
+    const EdgeHandle e(id);
+    if (mesh.is_boundary(e)) continue;
+    const auto f0 = mesh.face_handle(mesh.halfedge_handle(e, 0));
+    const auto f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
+    max_dihedral = std::max(
+        max_dihedral, angle_between_normals(mesh.calc_face_normal(f0), mesh.calc_face_normal(f1)));
+  }
+  stats.min_angle_deg = min_angle * kDegrees;
+  stats.mean_min_angle_deg =
+      patch.faces.empty() ? 0.0 : angle_sum / static_cast<double>(patch.faces.size()) * kDegrees;
+  stats.max_dihedral_deg = max_dihedral * kDegrees;
+  return stats;
+}
+
+std::map<int, std::size_t> valence_histogram(const Mesh& mesh) {
+  std::map<int, std::size_t> histogram;
+  for (const auto v : mesh.vertices()) ++histogram[mesh.valence(v)];
+  return histogram;
+}
+
+std::size_t connected_components(const Mesh& mesh) {
+  std::vector<char> seen(mesh.n_vertices(), 0);
+  std::vector<VertexHandle> stack;
+  std::size_t components = 0;
+  for (const auto start : mesh.vertices()) {
+    if (seen[start.idx()]) continue;
+    ++components;
+    seen[start.idx()] = 1;
+    stack.push_back(start);
+    while (!stack.empty()) {
+      const VertexHandle v = stack.back();
+      stack.pop_back();
+      for (const auto w : mesh.vv_range(v)) {
+        if (!seen[w.idx()]) {
+          seen[w.idx()] = 1;
+          stack.push_back(w);
+        }
+      }
+    }
+  }
+  return components;
+}
+
+}  // namespace holefill

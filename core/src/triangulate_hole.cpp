@@ -1,0 +1,75 @@
+#include <unordered_map>
+
+#include "holefill/triangulate.h"
+
+namespace holefill {
+
+HolePolygon hole_polygon(const Mesh& mesh, const Hole& hole) {
+  HolePolygon polygon;
+  const int n = static_cast<int>(hole.vertices.size());
+  std::unordered_map<int, std::vector<int>> positions_of_vertex;
+  for (int i = 0; i < n; ++i) {
+    polygon.points.push_back(mesh.point(hole.vertices[i]));
+    const FaceHandle outside = mesh.opposite_face_handle(hole.halfedges[i]);
+    polygon.outside_normals.push_back(outside.is_valid() ? mesh.calc_face_normal(outside)
+                                                         : Point(0.0, 0.0, 0.0));
+    positions_of_vertex[hole.vertices[i].idx()].push_back(i);
+  }
+  auto adjacent = [n](int a, int b) {
+    const int d = std::abs(a - b);
+    return d == 1 || d == n - 1;
+  };
+  for (int i = 0; i < n; ++i) {
+    for (const int j : positions_of_vertex[hole.vertices[i].idx()]) {
+      if (i < j) polygon.forbidden_chords.emplace_back(i, j);
+    }
+    for (const auto neighbour : mesh.vv_range(hole.vertices[i])) {
+      const auto found = positions_of_vertex.find(neighbour.idx());
+      if (found == positions_of_vertex.end()) continue;
+      for (const int k : found->second) {
+        if (i < k && !adjacent(i, k)) polygon.forbidden_chords.emplace_back(i, k);
+      }
+    }
+  }
+  return polygon;
+}
+
+TriangulateHoleResult triangulate_hole(Mesh& mesh, const Hole& hole,
+                                       const TriangulateOptions& options) {
+  TriangulateHoleResult result;
+  if (hole.size() < 3) {
+    result.failure = "a boundary loop of fewer than 3 edges cannot be triangulated";
+    return result;
+  }
+  const HolePolygon polygon = hole_polygon(mesh, hole);
+  const auto triangulation = triangulate_polygon(polygon, options);
+  if (!triangulation) {
+    result.failure =
+        "no valid triangulation: every one would duplicate an edge that already exists";
+    return result;
+  }
+
+  PatchTags tags(mesh);
+  Patch patch;
+  patch.hole_id = hole.id;
+  patch.stage = Stage::Triangulated;
+  patch.boundary = hole.vertices;
+  for (const auto& t : triangulation->triangles) {
+    const FaceHandle face =
+        mesh.add_face(hole.vertices[t[0]], hole.vertices[t[1]], hole.vertices[t[2]]);
+    if (!face.is_valid()) {
+      // The topology around the loop (e.g. a pinched vertex) refused a triangle: take back the
+      // ones added so far. They are the newest elements, so garbage collection moves no others.
+      for (const auto added : patch.faces) mesh.delete_face(added, false);
+      mesh.garbage_collection();
+      result.failure = "the mesh around this hole refused a patch triangle (non-manifold vertex)";
+      return result;
+    }
+    mesh.property(tags.face_stage, face) = static_cast<std::uint8_t>(Stage::Triangulated);
+    patch.faces.push_back(face);
+  }
+  result.patch = std::move(patch);
+  return result;
+}
+
+}  // namespace holefill

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs the Debian packages holefill needs (when run as root; otherwise prints the exact
+# apt-get line), then configures and builds everything in Release with all cores.
+# Used by scripts/run.sh and scripts/test.sh; BUILD_DIR overrides the build folder (build/).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PACKAGES=(
+  g++ cmake ninja-build pkg-config
+  libopenmesh-dev libtinyobjloader-dev libeigen3-dev
+  libgtest-dev libbenchmark-dev
+  libglfw3-dev libglm-dev libimgui-dev libepoxy-dev libstb-dev
+  xvfb xauth libgl1-mesa-dri
+)
+
+missing=()
+for package in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+    missing+=("$package")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  if [ "$(id -u)" = 0 ]; then
+    echo "setup: installing ${missing[*]}"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  else
+    echo "setup: missing packages; install them with:" >&2
+    echo "  sudo apt-get install -y ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+
+BUILD_DIR=${BUILD_DIR:-build}
+extra=()
+# CI treats warnings in our own code as errors.
+[ "${CI:-}" = true ] && extra+=(-DHOLEFILL_WARNINGS_AS_ERRORS=ON)
+cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release "${extra[@]}" "$@" >/dev/null
+cmake --build "$BUILD_DIR" --parallel "$(nproc)"

@@ -1,0 +1,200 @@
+// The whole pipeline on generated meshes: every filled hole closes, the mesh stays an oriented
+// manifold with the expected Euler characteristic, and the original part is untouched.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "holefill/fill.h"
+#include "holefill/holes.h"
+#include "test_meshes.h"
+
+namespace holefill {
+namespace {
+
+using testing::is_oriented_manifold;
+using testing::make_grid;
+using testing::make_icosphere;
+using testing::original_part_unchanged;
+using testing::without_faces;
+
+long euler_characteristic(const Mesh& mesh) {
+  long used_vertices = 0;
+  for (const auto v : mesh.vertices()) used_vertices += mesh.is_isolated(v) ? 0 : 1;
+  return used_vertices - static_cast<long>(mesh.n_edges()) + static_cast<long>(mesh.n_faces());
+}
+
+// A sphere with a wavy cap cut out, and a second, small hole elsewhere.
+Mesh sphere_with_two_holes() {
+  return without_faces(make_icosphere(3), [](const Point& c) {
+    const double angle = std::atan2(c[1], c[0]);
+    const bool cap = c[2] > 0.55 + 0.12 * std::sin(5.0 * angle);
+    const bool small = (c - Point(0.0, 0.0, -1.0)).norm() < 0.25;
+    return cap || small;
+  });
+}
+
+class FillEveryWeight : public ::testing::TestWithParam<WeightKind> {};
+
+TEST_P(FillEveryWeight, ClosesASphereAndKeepsTheOriginalPart) {
+  const Mesh before = sphere_with_two_holes();
+  const auto holes = find_holes(before);
+  ASSERT_EQ(holes.size(), 2u);
+  Mesh mesh = before;
+  FillOptions options;
+  options.triangulate.weight = GetParam();
+  const auto fills = fill_holes(mesh, holes, options);
+  ASSERT_EQ(fills.size(), 2u);
+  for (const auto& fill : fills) {
+    EXPECT_FALSE(fill.failed()) << fill.failure;
+    EXPECT_EQ(fill.stage(), Stage::Smoothed);
+  }
+  EXPECT_TRUE(find_holes(mesh).empty());
+  EXPECT_TRUE(is_oriented_manifold(mesh));
+  EXPECT_EQ(euler_characteristic(mesh), 2);  // a sphere again
+  EXPECT_TRUE(original_part_unchanged(before, mesh));
+}
+
+TEST_P(FillEveryWeight, FillsOnlyTheInnerHoleOfATerrain) {
+  const Mesh before = without_faces(
+      make_grid(30, [](double x, double y) { return 0.2 * std::sin(4 * x) * std::cos(3 * y); }),
+      [](const Point& c) {
+        const double dx = c[0] - 0.5, dy = c[1] - 0.5, angle = std::atan2(dy, dx);
+        return std::hypot(dx, dy) < 0.25 + 0.06 * std::sin(7 * angle);
+      });
+  auto holes = find_holes(before);
+  ASSERT_EQ(holes.size(), 2u);  // the outer border and the inner hole
+  Mesh mesh = before;
+  FillOptions options;
+  options.triangulate.weight = GetParam();
+  HoleSelection inner;
+  inner.hole_ids = {1};  // the border has more edges, so it is hole 0
+  const auto fills = fill_holes(mesh, holes, options, inner);
+  ASSERT_EQ(fills.size(), 1u);
+  EXPECT_FALSE(fills[0].failed());
+  EXPECT_EQ(find_holes(mesh).size(), 1u);
+  EXPECT_TRUE(is_oriented_manifold(mesh));
+  EXPECT_EQ(euler_characteristic(mesh), 1);  // a disk
+  EXPECT_TRUE(original_part_unchanged(before, mesh));
+}
+
+INSTANTIATE_TEST_SUITE_P(Weights, FillEveryWeight,
+                         ::testing::Values(WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area),
+                         [](const auto& info) { return to_string(info.param); });
+
+TEST(Fill, StepsThroughTheStagesInOrder) {
+  Mesh mesh = sphere_with_two_holes();
+  const auto holes = find_holes(mesh);
+  HoleFill fill;
+  const FillOptions options;
+  ASSERT_TRUE(advance(mesh, holes[0], fill, options));
+  EXPECT_EQ(fill.stage(), Stage::Triangulated);
+  EXPECT_EQ(fill.stats.new_faces, holes[0].size() - 2);  // a polygon's triangulation
+  EXPECT_EQ(fill.stats.new_vertices, 0u);
+  ASSERT_TRUE(advance(mesh, holes[0], fill, options));
+  EXPECT_EQ(fill.stage(), Stage::Refined);
+  EXPECT_GT(fill.stats.new_vertices, 0u);
+  // Each new interior vertex adds two faces to a disk's triangulation.
+  EXPECT_EQ(fill.stats.new_faces, holes[0].size() - 2 + 2 * fill.stats.new_vertices);
+  ASSERT_TRUE(advance(mesh, holes[0], fill, options));
+  EXPECT_EQ(fill.stage(), Stage::Smoothed);
+  EXPECT_FALSE(advance(mesh, holes[0], fill, options));
+  EXPECT_FALSE(fill.failed());
+}
+
+TEST(Fill, StopsAfterTheRequestedStage) {
+  Mesh mesh = sphere_with_two_holes();
+  const auto holes = find_holes(mesh);
+  FillOptions options;
+  options.last_stage = Stage::Triangulated;
+  const HoleFill fill = fill_hole(mesh, holes[0], options);
+  EXPECT_EQ(fill.stage(), Stage::Triangulated);
+  EXPECT_EQ(fill.stats.new_vertices, 0u);
+}
+
+TEST(Fill, NeverDuplicatesAnEdgeThatAlreadyJoinsTwoBoundaryVertices) {
+  // Two triangles sharing edge A-C: one boundary loop A, B, C, D whose short diagonal A-C
+  // already exists. Any weight would like A-C; the only manifold fill uses B-D.
+  Mesh before;
+  const auto a = before.add_vertex(Point(0.0, 0.0, 0.0));
+  const auto b = before.add_vertex(Point(0.5, 2.0, 0.1));
+  const auto c = before.add_vertex(Point(1.0, 0.0, 0.0));
+  const auto d = before.add_vertex(Point(0.5, -2.0, 0.1));
+  before.add_face(a, c, b);
+  before.add_face(a, d, c);
+  const auto holes = find_holes(before);
+  ASSERT_EQ(holes.size(), 1u);
+  for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}) {
+    Mesh mesh = before;
+    FillOptions options;
+    options.triangulate.weight = weight;
+    options.last_stage = Stage::Triangulated;
+    const HoleFill fill = fill_hole(mesh, holes[0], options);
+    ASSERT_FALSE(fill.failed()) << fill.failure;
+    EXPECT_TRUE(is_oriented_manifold(mesh));
+    EXPECT_EQ(euler_characteristic(mesh), 2);
+    EXPECT_TRUE(mesh.find_halfedge(b, d).is_valid());
+    EXPECT_TRUE(find_holes(mesh).empty());
+  }
+}
+
+TEST(Refine, PatchEdgesTrackTheSurroundingDensity) {
+  const Mesh before = sphere_with_two_holes();
+  const auto holes = find_holes(before);
+  Mesh mesh = before;
+  FillOptions options;
+  options.last_stage = Stage::Refined;
+  const HoleFill fill = fill_hole(mesh, holes[0], options);
+  ASSERT_FALSE(fill.failed());
+  double total = 0.0;
+  int count = 0;
+  for (const auto f : fill.patch.faces) {
+    for (const auto e : mesh.fe_range(f)) {
+      total += mesh.calc_edge_length(e);
+      ++count;
+    }
+  }
+  const double mean_patch_edge = total / count;
+  const double surrounding = holes[0].mean_surrounding_edge_length;
+  EXPECT_GT(mean_patch_edge, 0.7 * surrounding);
+  EXPECT_LT(mean_patch_edge, 1.5 * surrounding);
+}
+
+TEST(Refine, LargerTauNeverGivesFewerVertices) {
+  const Mesh before = sphere_with_two_holes();
+  const auto holes = find_holes(before);
+  std::size_t previous = 0;
+  for (const double tau : {0.8, 1.0, 1.2, std::sqrt(2.0), 1.7, 2.0}) {
+    Mesh mesh = before;
+    FillOptions options;
+    options.refine.tau = tau;
+    options.last_stage = Stage::Refined;
+    const HoleFill fill = fill_hole(mesh, holes[0], options);
+    EXPECT_GE(fill.stats.new_vertices, previous) << "tau = " << tau;
+    previous = fill.stats.new_vertices;
+  }
+  EXPECT_GT(previous, 0u);
+}
+
+TEST(Smooth, LowersUmbrellaEnergyAndNeverMovesTheBoundary) {
+  const Mesh before = sphere_with_two_holes();
+  const auto holes = find_holes(before);
+  Mesh mesh = before;
+  FillOptions options;
+  options.last_stage = Stage::Refined;
+  HoleFill fill = fill_hole(mesh, holes[0], options);
+  // Disturb the refined patch so there is something to smooth.
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+  for (const auto v : fill.patch.new_vertices) {
+    mesh.set_point(v, mesh.point(v) + Point(jitter(rng), jitter(rng), jitter(rng)));
+  }
+  const Mesh refined = mesh;
+  const double energy_before = umbrella_energy(mesh, fill.patch);
+  smooth_patch(mesh, fill.patch, {10, 0.5});
+  EXPECT_LT(umbrella_energy(mesh, fill.patch), 0.5 * energy_before);
+  EXPECT_TRUE(original_part_unchanged(before, mesh));
+  for (const auto v : fill.patch.boundary) EXPECT_EQ(mesh.point(v), refined.point(v));
+}
+
+}  // namespace
+}  // namespace holefill

@@ -1,0 +1,230 @@
+// The dynamic program against independent truths: brute-force enumeration of every
+// triangulation of small polygons, and the Delaunay triangulation of planar convex polygons.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+
+#include "holefill/triangulate.h"
+#include "test_meshes.h"
+
+namespace holefill {
+namespace {
+
+using Triangles = std::vector<std::array<int, 3>>;
+
+// Every triangulation of the sub-polygon i..k that uses no forbidden chord.
+std::vector<Triangles> all_triangulations(int i, int k, const std::set<std::pair<int, int>>& forbidden,
+                                          int n) {
+  if (k - i < 2) return {Triangles{}};
+  if (forbidden.count({i, k}) && !(i == 0 && k == n - 1)) return {};
+  std::vector<Triangles> result;
+  for (int m = i + 1; m < k; ++m) {
+    for (const auto& left : all_triangulations(i, m, forbidden, n)) {
+      for (const auto& right : all_triangulations(m, k, forbidden, n)) {
+        Triangles t = left;
+        t.insert(t.end(), right.begin(), right.end());
+        t.push_back({i, m, k});
+        result.push_back(std::move(t));
+      }
+    }
+  }
+  return result;
+}
+
+HolePolygon random_hole(int n, std::mt19937& rng) {
+  HolePolygon polygon;
+  polygon.points = testing::random_loop(n, rng, 0.35, 0.4);
+  // The surrounding surface leans outwards and downwards, as around a hole in a curved mesh.
+  for (int i = 0; i < n; ++i) {
+    const Point mid = (polygon.points[i] + polygon.points[(i + 1) % n]) * 0.5;
+    polygon.outside_normals.push_back((Point(0, 0, 1) + 0.4 * Point(mid[0], mid[1], 0)).normalized());
+  }
+  return polygon;
+}
+
+std::vector<std::pair<int, int>> random_forbidden_chords(int n, std::mt19937& rng) {
+  std::vector<std::pair<int, int>> chords;
+  std::bernoulli_distribution pick(0.15);
+  for (int i = 0; i < n; ++i) {
+    for (int k = i + 2; k < n; ++k) {
+      if (!(i == 0 && k == n - 1) && pick(rng)) chords.emplace_back(i, k);
+    }
+  }
+  return chords;
+}
+
+TEST(Triangulate, AreaWeightMatchesBruteForceOnSmallPolygons) {
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 3 + trial % 7;  // 3 ... 9
+    HolePolygon polygon = random_hole(n, rng);
+    polygon.forbidden_chords = random_forbidden_chords(n, rng);
+    const std::set<std::pair<int, int>> forbidden(polygon.forbidden_chords.begin(),
+                                                  polygon.forbidden_chords.end());
+    const auto candidates = all_triangulations(0, n - 1, forbidden, n);
+    const auto dp = triangulate_polygon(polygon, {WeightKind::Area});
+    ASSERT_EQ(dp.has_value(), !candidates.empty()) << "trial " << trial;
+    if (!dp) continue;
+    double best = INFINITY;
+    for (const auto& t : candidates) best = std::min(best, evaluate_triangulation(polygon, t).area);
+    EXPECT_NEAR(dp->quality.area, best, 1e-12 * best) << "trial " << trial << ", n = " << n;
+  }
+}
+
+TEST(Triangulate, MaxMinMaximisesTheSmallestAngleLikeBruteForce) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 3 + trial % 7;
+    HolePolygon polygon = random_hole(n, rng);
+    polygon.forbidden_chords = random_forbidden_chords(n, rng);
+    const std::set<std::pair<int, int>> forbidden(polygon.forbidden_chords.begin(),
+                                                  polygon.forbidden_chords.end());
+    const auto candidates = all_triangulations(0, n - 1, forbidden, n);
+    const auto dp = triangulate_polygon(polygon, {WeightKind::MaxMin});
+    ASSERT_EQ(dp.has_value(), !candidates.empty());
+    if (!dp) continue;
+    double best = 0.0;
+    for (const auto& t : candidates) {
+      best = std::max(best, evaluate_triangulation(polygon, t).min_angle);
+    }
+    EXPECT_NEAR(dp->quality.min_angle, best, 1e-12) << "trial " << trial << ", n = " << n;
+  }
+}
+
+// With four corners each side of the root triangle has a single triangulation, so the dynamic
+// program's dihedral terms are exact: every weight must find the optimum under its full order.
+TEST(Triangulate, EveryWeightIsOptimalUnderItsFullOrderOnQuadrilaterals) {
+  std::mt19937 rng(3);
+  for (int trial = 0; trial < 200; ++trial) {
+    const HolePolygon polygon = random_hole(4, rng);
+    const Triangles split_02{{0, 1, 2}, {0, 2, 3}}, split_13{{1, 2, 3}, {0, 1, 3}};
+    const auto q02 = evaluate_triangulation(polygon, split_02);
+    const auto q13 = evaluate_triangulation(polygon, split_13);
+    auto as_maxmin = [](const TriangulationQuality& q) {
+      return MaxMinWeight::Value{q.degenerate, q.min_angle, q.max_dihedral, q.area};
+    };
+    auto as_liepa = [](const TriangulationQuality& q) {
+      return LiepaWeight::Value{q.degenerate, q.max_dihedral, q.area};
+    };
+    const auto maxmin = triangulate_polygon(polygon, {WeightKind::MaxMin, 0.0});
+    const auto liepa = triangulate_polygon(polygon, {WeightKind::Liepa, 0.0});
+    ASSERT_TRUE(maxmin && liepa);
+    const MaxMinWeight maxmin_order{0.0};
+    const LiepaWeight liepa_order{0.0};
+    const bool maxmin_prefers_02 = maxmin_order.less(as_maxmin(q02), as_maxmin(q13));
+    const bool liepa_prefers_02 = liepa_order.less(as_liepa(q02), as_liepa(q13));
+    EXPECT_NEAR(maxmin->quality.min_angle, (maxmin_prefers_02 ? q02 : q13).min_angle, 1e-12);
+    EXPECT_NEAR(maxmin->quality.max_dihedral, (maxmin_prefers_02 ? q02 : q13).max_dihedral, 1e-12);
+    EXPECT_NEAR(liepa->quality.max_dihedral, (liepa_prefers_02 ? q02 : q13).max_dihedral, 1e-12);
+    EXPECT_NEAR(liepa->quality.area, (liepa_prefers_02 ? q02 : q13).area, 1e-12);
+  }
+}
+
+// Delaunay maximises the smallest angle over all triangulations of a point set; for a convex
+// polygon those are exactly the polygon's triangulations.
+TEST(Triangulate, MaxMinOnPlanarConvexPolygonMatchesDelaunayMinAngle) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int n = 5 + trial;
+    std::vector<double> angles;
+    for (int i = 0; i < n; ++i) angles.push_back(2.0 * M_PI * unit(rng));
+    std::sort(angles.begin(), angles.end());
+    HolePolygon polygon;
+    for (const double a : angles) polygon.points.emplace_back(2.0 * std::cos(a), std::sin(a), 0.0);
+    polygon.outside_normals.assign(n, Point(0, 0, 1));
+
+    // Brute-force Delaunay: triangles whose circumcircle holds no other point.
+    double delaunay_min_angle = M_PI;
+    const auto& p = polygon.points;
+    for (int i = 0; i < n; ++i) {
+      for (int j = i + 1; j < n; ++j) {
+        for (int k = j + 1; k < n; ++k) {
+          const double ax = p[i][0], ay = p[i][1], bx = p[j][0], by = p[j][1], cx = p[k][0],
+                       cy = p[k][1];
+          const double d = 2.0 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by));
+          if (std::abs(d) < 1e-14) continue;
+          const double ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay) +
+                             (cx * cx + cy * cy) * (ay - by)) / d;
+          const double uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx) +
+                             (cx * cx + cy * cy) * (bx - ax)) / d;
+          const double r2 = (ax - ux) * (ax - ux) + (ay - uy) * (ay - uy);
+          bool empty = true;
+          for (int m = 0; m < n && empty; ++m) {
+            if (m == i || m == j || m == k) continue;
+            const double d2 = (p[m][0] - ux) * (p[m][0] - ux) + (p[m][1] - uy) * (p[m][1] - uy);
+            if (d2 < r2 * (1.0 - 1e-12)) empty = false;
+          }
+          if (empty) {
+            delaunay_min_angle = std::min(delaunay_min_angle, measure_triangle(p[i], p[j], p[k]).min_angle);
+          }
+        }
+      }
+    }
+    const auto dp = triangulate_polygon(polygon, {WeightKind::MaxMin});
+    ASSERT_TRUE(dp);
+    EXPECT_NEAR(dp->quality.min_angle, delaunay_min_angle, 1e-12) << "n = " << n;
+    EXPECT_NEAR(dp->quality.max_dihedral, 0.0, 1e-12);  // planar: the patch stays flat
+  }
+}
+
+TEST(Triangulate, NeverUsesAForbiddenChord) {
+  std::mt19937 rng(13);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = 6 + trial % 20;
+    HolePolygon polygon = random_hole(n, rng);
+    polygon.forbidden_chords = random_forbidden_chords(n, rng);
+    const std::set<std::pair<int, int>> forbidden(polygon.forbidden_chords.begin(),
+                                                  polygon.forbidden_chords.end());
+    for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}) {
+      const auto dp = triangulate_polygon(polygon, {weight});
+      if (!dp) continue;
+      EXPECT_EQ(dp->triangles.size(), static_cast<std::size_t>(n - 2));
+      for (const auto& t : dp->triangles) {
+        EXPECT_FALSE(forbidden.count({t[0], t[1]}) || forbidden.count({t[1], t[2]}) ||
+                     forbidden.count({t[0], t[2]}));
+      }
+    }
+  }
+}
+
+TEST(Triangulate, ReportsNoTriangulationWhenEveryChordIsForbidden) {
+  std::mt19937 rng(17);
+  HolePolygon polygon = random_hole(6, rng);
+  for (int i = 0; i < 6; ++i) {
+    for (int k = i + 2; k < 6; ++k) {
+      if (!(i == 0 && k == 5)) polygon.forbidden_chords.emplace_back(i, k);
+    }
+  }
+  EXPECT_FALSE(triangulate_polygon(polygon, {WeightKind::MaxMin}).has_value());
+  EXPECT_FALSE(triangulate_polygon(polygon, {WeightKind::Area}).has_value());
+}
+
+TEST(Triangulate, CollinearPointsGiveFiniteWeightsAndAreAvoided) {
+  HolePolygon polygon;
+  // A square with an extra point in the middle of one side: one triangle could be flat.
+  polygon.points = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+  polygon.outside_normals.assign(5, Point(0, 0, 1));
+  for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}) {
+    const auto dp = triangulate_polygon(polygon, {weight});
+    ASSERT_TRUE(dp);
+    EXPECT_EQ(dp->quality.degenerate, 0) << to_string(weight);
+    EXPECT_TRUE(std::isfinite(dp->quality.min_angle) && std::isfinite(dp->quality.max_dihedral));
+  }
+  const TriangleMeasures flat = measure_triangle({0, 0, 0}, {1, 0, 0}, {2, 0, 0});
+  EXPECT_TRUE(flat.degenerate);
+  EXPECT_EQ(flat.min_angle, 0.0);
+}
+
+TEST(Triangulate, MeasureTriangleGivesTheSmallestAngle) {
+  // A 30-60-90 triangle.
+  const auto m = measure_triangle({0, 0, 0}, {std::sqrt(3.0), 0, 0}, {0, 1, 0});
+  EXPECT_NEAR(m.min_angle, M_PI / 6.0, 1e-12);
+  EXPECT_NEAR(m.area, std::sqrt(3.0) / 2.0, 1e-12);
+  EXPECT_FALSE(m.degenerate);
+}
+
+}  // namespace
+}  // namespace holefill

@@ -1,0 +1,33 @@
+// Meshes made in code for the tests: closed shapes with known topology, and ways to cut holes.
+#pragma once
+
+#include <functional>
+#include <random>
+#include <vector>
+
+#include "holefill/mesh.h"
+
+namespace holefill::testing {
+
+// A unit sphere: an icosahedron subdivided `levels` times, projected to the sphere.
+Mesh make_icosphere(int levels);
+
+// A height field z = height(x, y) over [0,1]^2 sampled on an n x n vertex grid.
+Mesh make_grid(int n, const std::function<double(double, double)>& height);
+
+// A copy of `mesh` without the faces for which `remove(face centroid)` is true; vertices keep
+// their indices (unreferenced ones stay, isolated).
+Mesh without_faces(const Mesh& mesh, const std::function<bool(const Point&)>& remove);
+
+// A random simple polygon: points on a wavy, noisy loop around the z axis (radius ~1).
+std::vector<Point> random_loop(int n, std::mt19937& rng, double noise = 0.2, double waviness = 0.3);
+
+// Every vertex position and every face's vertex list of `before` is present, unchanged, at
+// the same index in `after`.
+bool original_part_unchanged(const Mesh& before, const Mesh& after);
+
+// Every edge has at most two faces, used in opposite directions (OpenMesh stores only such
+// meshes, so this checks the halfedge links), and every vertex has one fan of faces.
+bool is_oriented_manifold(const Mesh& mesh);
+
+}  // namespace holefill::testing
