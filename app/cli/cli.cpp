@@ -43,6 +43,11 @@ constexpr const char* kFillHelp = R"(usage: holefill fill MESH -o OUT [options]
   -o, --output OUT            where to write the result (.obj .off .ply); written atomically
   --weight maxmin|liepa|area  triangulation weight (default maxmin, the paper's)
   --tau T                     refinement density factor, > 0 (default 1.41421, sqrt 2)
+  --smooth umbrella|fair      umbrella smoothing (the paper's, default) or fairing that
+                              continues the surrounding curvature
+  --fair-order 2|3            fairing: 2 bi-Laplacian (default), 3 tri-Laplacian
+  --fair-weights cotangent|uniform
+                              fairing: Laplacian weights (default cotangent)
   --smooth-iterations N       umbrella smoothing iterations, >= 0 (default 10)
   --smooth-step L             umbrella step lambda, in (0, 1] (default 0.5)
   --holes 0,3,5               fill only these hole ids (as `holefill info` lists them)
@@ -146,6 +151,25 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
     } else if (arg == "--tau") {
       options.refine.tau = parse_number(arg, value());
       if (options.refine.tau <= 0.0) throw UsageError{"--tau must be greater than 0"};
+    } else if (arg == "--smooth") {
+      const std::string& text = value();
+      if (text == "umbrella") {
+        options.smooth.method = SmoothMethod::Umbrella;
+      } else if (text == "fair") {
+        options.smooth.method = SmoothMethod::Fair;
+      } else {
+        throw UsageError{"--smooth takes umbrella or fair, got '" + text + "'"};
+      }
+    } else if (arg == "--fair-order") {
+      const long order = parse_integer(arg, value());
+      if (order != 2 && order != 3) throw UsageError{"--fair-order takes 2 or 3"};
+      options.smooth.fair.order = static_cast<int>(order);
+    } else if (arg == "--fair-weights") {
+      const std::string& text = value();
+      if (text != "cotangent" && text != "uniform") {
+        throw UsageError{"--fair-weights takes cotangent or uniform, got '" + text + "'"};
+      }
+      options.smooth.fair.cotangent_weights = text == "cotangent";
     } else if (arg == "--smooth-iterations") {
       const long n = parse_integer(arg, value());
       if (n < 0 || n > 1'000'000) throw UsageError{"--smooth-iterations must be in 0..1000000"};
@@ -210,6 +234,10 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
         << std::setw(11) << format("%.2f", s.min_angle_deg) << std::setw(14)
         << format("%.2f", s.max_dihedral_deg) << std::setw(10) << format("%.4f", seconds) << "\n";
     if (!fill.failed()) ++filled;
+    if (!fill.smoothing_note.empty()) {
+      err << "holefill: " << input << ": hole " << fill.hole_id << ": " << fill.smoothing_note
+          << "\n";
+    }
     if (fill.failed()) {
       err << "holefill: " << input << ": hole " << fill.hole_id << " not filled: " << fill.failure
           << "\n";

@@ -46,6 +46,7 @@ void write_fill(const HoleFill& fill, std::ostream& out) {
       << ", \"filled\": " << (fill.failed() ? "false" : "true")
       << ", \"stage\": " << quoted(to_string(fill.stage()));
   if (fill.failed()) out << ", \"failure\": " << quoted(fill.failure);
+  if (!fill.smoothing_note.empty()) out << ", \"smoothing_note\": " << quoted(fill.smoothing_note);
   out << ",\n     \"new_vertices\": " << s.new_vertices << ", \"new_faces\": " << s.new_faces
       << ", \"min_angle_deg\": " << number(s.min_angle_deg)
       << ", \"mean_min_angle_deg\": " << number(s.mean_min_angle_deg)
@@ -68,6 +69,9 @@ void write_json_report(const ReportInput& in, std::ostream& out) {
   out << "{\n  \"input\": " << quoted(in.input_path) << ",\n  \"output\": "
       << quoted(in.output_path) << ",\n  \"options\": {\"weight\": "
       << quoted(to_string(o.triangulate.weight)) << ", \"tau\": " << number(o.refine.tau)
+      << ", \"smooth\": "
+      << quoted(o.smooth.method == SmoothMethod::Fair ? "fair" : "umbrella")
+      << ", \"fair_order\": " << o.smooth.fair.order
       << ", \"smooth_iterations\": " << o.smooth.iterations
       << ", \"smooth_step\": " << number(o.smooth.step)
       << ", \"last_stage\": " << quoted(to_string(o.last_stage)) << "},\n"

@@ -13,6 +13,19 @@ double timed(Work&& work) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The smoothing stage: the paper's umbrella operator, or fairing with umbrella as the fallback.
+void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options) {
+  if (options.method == SmoothMethod::Fair) {
+    const FairResult result = fair_patch(mesh, fill.patch, options.fair);
+    if (result.solved) {
+      fill.patch.stage = Stage::Smoothed;
+      return;
+    }
+    fill.smoothing_note = "fairing fell back to umbrella smoothing: " + result.problem;
+  }
+  smooth_patch(mesh, fill.patch, options);
+}
+
 }  // namespace
 
 bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options) {
@@ -36,7 +49,7 @@ bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& op
           timed([&] { fill.refinement = refine_patch(mesh, fill.patch, options.refine); });
       break;
     case Stage::Refined:
-      fill.times.smooth_seconds = timed([&] { smooth_patch(mesh, fill.patch, options.smooth); });
+      fill.times.smooth_seconds = timed([&] { smooth(mesh, fill, options.smooth); });
       break;
     case Stage::Smoothed:
       return false;

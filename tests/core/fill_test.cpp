@@ -190,7 +190,7 @@ TEST(Smooth, LowersUmbrellaEnergyAndNeverMovesTheBoundary) {
   }
   const Mesh refined = mesh;
   const double energy_before = umbrella_energy(mesh, fill.patch);
-  smooth_patch(mesh, fill.patch, {10, 0.5});
+  smooth_patch(mesh, fill.patch, SmoothOptions{});
   EXPECT_LT(umbrella_energy(mesh, fill.patch), 0.5 * energy_before);
   EXPECT_TRUE(original_part_unchanged(before, mesh));
   for (const auto v : fill.patch.boundary) EXPECT_EQ(mesh.point(v), refined.point(v));

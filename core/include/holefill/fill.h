@@ -38,6 +38,7 @@ struct HoleFill {
   PatchStats stats;       // after the last stage run
   StageTimes times;
   RefineResult refinement;
+  std::string smoothing_note;  // e.g. why fairing fell back to umbrella smoothing
 
   Stage stage() const { return patch.stage; }
   bool failed() const { return !failure.empty(); }

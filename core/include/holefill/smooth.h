@@ -3,14 +3,19 @@
 // applied simultaneously to the patch's own vertices; boundary and original vertices never move.
 #pragma once
 
+#include "holefill/fair.h"
 #include "holefill/mesh.h"
 #include "holefill/patch.h"
 
 namespace holefill {
 
+enum class SmoothMethod { Umbrella, Fair };
+
 struct SmoothOptions {
-  int iterations = 10;
-  double step = 0.5;  // lambda; the paper gives none
+  SmoothMethod method = SmoothMethod::Umbrella;  // the paper's; Fair continues the curvature
+  int iterations = 10;                           // umbrella only
+  double step = 0.5;                             // umbrella lambda; the paper gives none
+  FairOptions fair;                              // fair only
 };
 
 void smooth_patch(Mesh& mesh, Patch& patch, const SmoothOptions& options = {});
