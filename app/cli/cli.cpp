@@ -112,7 +112,8 @@ std::string format(const char* pattern, double value) {
 Mesh load_and_warn(const std::string& path, std::ostream& err) {
   LoadReport report;
   Mesh mesh = load_mesh(path, &report);
-  for (const auto& warning : report.warnings) err << "holefill: " << path << ": " << warning << "\n";
+  for (const auto& warning : report.warnings)
+    err << "holefill: " << path << ": " << warning << "\n";
   return mesh;
 }
 
@@ -228,11 +229,11 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
     const auto& s = fill.stats;
     const double seconds =
         fill.times.triangulate_seconds + fill.times.refine_seconds + fill.times.smooth_seconds;
-    out << std::setw(6) << fill.hole_id << std::setw(10) << fill.boundary_edges << "  "
-        << std::left << std::setw(13) << (fill.failed() ? "FAILED" : to_string(fill.stage()))
-        << std::right << std::setw(7) << s.new_vertices << std::setw(8) << s.new_faces
-        << std::setw(11) << format("%.2f", s.min_angle_deg) << std::setw(14)
-        << format("%.2f", s.max_dihedral_deg) << std::setw(10) << format("%.4f", seconds) << "\n";
+    out << std::setw(6) << fill.hole_id << std::setw(10) << fill.boundary_edges << "  " << std::left
+        << std::setw(13) << (fill.failed() ? "FAILED" : to_string(fill.stage())) << std::right
+        << std::setw(7) << s.new_vertices << std::setw(8) << s.new_faces << std::setw(11)
+        << format("%.2f", s.min_angle_deg) << std::setw(14) << format("%.2f", s.max_dihedral_deg)
+        << std::setw(10) << format("%.4f", seconds) << "\n";
     if (!fill.failed()) ++filled;
     if (!fill.smoothing_note.empty()) {
       err << "holefill: " << input << ": hole " << fill.hole_id << ": " << fill.smoothing_note
@@ -274,9 +275,8 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const std::string command = args.empty() ? "help" : args[0];
   const std::vector<std::string> rest(args.begin() + (args.empty() ? 0 : 1), args.end());
-  const bool wants_help =
-      std::find(rest.begin(), rest.end(), "--help") != rest.end() ||
-      std::find(rest.begin(), rest.end(), "-h") != rest.end();
+  const bool wants_help = std::find(rest.begin(), rest.end(), "--help") != rest.end() ||
+                          std::find(rest.begin(), rest.end(), "-h") != rest.end();
   try {
     if (command == "help" || command == "--help" || command == "-h") {
       const std::string topic = rest.empty() ? "" : rest[0];

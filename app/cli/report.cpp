@@ -66,17 +66,17 @@ void write_fill(const HoleFill& fill, std::ostream& out) {
 
 void write_json_report(const ReportInput& in, std::ostream& out) {
   const FillOptions& o = *in.options;
-  out << "{\n  \"input\": " << quoted(in.input_path) << ",\n  \"output\": "
-      << quoted(in.output_path) << ",\n  \"options\": {\"weight\": "
-      << quoted(to_string(o.triangulate.weight)) << ", \"tau\": " << number(o.refine.tau)
-      << ", \"smooth\": "
-      << quoted(o.smooth.method == SmoothMethod::Fair ? "fair" : "umbrella")
+  out << "{\n  \"input\": " << quoted(in.input_path)
+      << ",\n  \"output\": " << quoted(in.output_path)
+      << ",\n  \"options\": {\"weight\": " << quoted(to_string(o.triangulate.weight))
+      << ", \"tau\": " << number(o.refine.tau)
+      << ", \"smooth\": " << quoted(o.smooth.method == SmoothMethod::Fair ? "fair" : "umbrella")
       << ", \"fair_order\": " << o.smooth.fair.order
       << ", \"smooth_iterations\": " << o.smooth.iterations
       << ", \"smooth_step\": " << number(o.smooth.step)
       << ", \"last_stage\": " << quoted(to_string(o.last_stage)) << "},\n"
-      << "  \"before\": {\"vertices\": " << in.vertices_before << ", \"faces\": "
-      << in.faces_before << ", \"holes\": " << in.holes_before << "},\n"
+      << "  \"before\": {\"vertices\": " << in.vertices_before << ", \"faces\": " << in.faces_before
+      << ", \"holes\": " << in.holes_before << "},\n"
       << "  \"after\": {\"vertices\": " << in.vertices_after << ", \"faces\": " << in.faces_after
       << ", \"holes\": " << in.holes_after << "},\n  \"holes\": [\n";
   for (std::size_t i = 0; i < in.fills->size(); ++i) {

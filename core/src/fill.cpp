@@ -67,8 +67,7 @@ HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options) {
 
 bool HoleSelection::includes(const Hole& hole) const {
   if (max_boundary_edges && hole.size() > max_boundary_edges) return false;
-  return hole_ids.empty() ||
-         std::find(hole_ids.begin(), hole_ids.end(), hole.id) != hole_ids.end();
+  return hole_ids.empty() || std::find(hole_ids.begin(), hole_ids.end(), hole.id) != hole_ids.end();
 }
 
 std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,

@@ -1,8 +1,8 @@
 #include "holefill/io.h"
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
 #include <tiny_obj_loader.h>
 
+#include <OpenMesh/Core/IO/MeshIO.hh>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,7 +20,8 @@ namespace {
 
 std::string lower_extension(const fs::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 

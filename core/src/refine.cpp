@@ -94,9 +94,10 @@ RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options
       for (const auto v : mesh.fv_range(f)) corner[c++] = v;
       const Point centroid =
           (mesh.point(corner[0]) + mesh.point(corner[1]) + mesh.point(corner[2])) / 3.0;
-      const double centroid_scale = (mesh.property(tags.scale, corner[0]) +
-                                     mesh.property(tags.scale, corner[1]) +
-                                     mesh.property(tags.scale, corner[2])) / 3.0;
+      const double centroid_scale =
+          (mesh.property(tags.scale, corner[0]) + mesh.property(tags.scale, corner[1]) +
+           mesh.property(tags.scale, corner[2])) /
+          3.0;
       bool split = true;
       for (const auto v : corner) {
         const double reach = tau * (centroid - mesh.point(v)).norm();

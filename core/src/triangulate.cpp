@@ -71,9 +71,11 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
         Point normal(0.0, 0.0, 0.0);
         if constexpr (Weight::kUsesDihedral) {
           normal = unit_normal(p[i], p[m], p[k]);
-          double dihedral = std::max(dihedral_against(normal, i, m), dihedral_against(normal, m, k));
+          double dihedral =
+              std::max(dihedral_against(normal, i, m), dihedral_against(normal, m, k));
           if (closing_edge && !is_zero(polygon.outside_normals[n - 1])) {
-            dihedral = std::max(dihedral, angle_between_normals(normal, polygon.outside_normals[n - 1]));
+            dihedral =
+                std::max(dihedral, angle_between_normals(normal, polygon.outside_normals[n - 1]));
           }
           measures.max_dihedral = dihedral;
         }

@@ -1,10 +1,11 @@
 // The whole pipeline on generated meshes: every filled hole closes, the mesh stays an oriented
 // manifold with the expected Euler characteristic, and the original part is untouched.
+#include "holefill/fill.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "holefill/fill.h"
 #include "holefill/holes.h"
 #include "test_meshes.h"
 

@@ -1,12 +1,13 @@
 // Reading and writing: round trips keep positions bit for bit and faces in order; every failure
 // names the file and the reason.
+#include "holefill/io.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
 #include "holefill/errors.h"
-#include "holefill/io.h"
 #include "test_meshes.h"
 
 namespace holefill {

@@ -1,12 +1,13 @@
 // The dynamic program against independent truths: brute-force enumeration of every
 // triangulation of small polygons, and the Delaunay triangulation of planar convex polygons.
+#include "holefill/triangulate.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 #include <set>
 
-#include "holefill/triangulate.h"
 #include "test_meshes.h"
 
 namespace holefill {
@@ -15,8 +16,8 @@ namespace {
 using Triangles = std::vector<std::array<int, 3>>;
 
 // Every triangulation of the sub-polygon i..k that uses no forbidden chord.
-std::vector<Triangles> all_triangulations(int i, int k, const std::set<std::pair<int, int>>& forbidden,
-                                          int n) {
+std::vector<Triangles> all_triangulations(int i, int k,
+                                          const std::set<std::pair<int, int>>& forbidden, int n) {
   if (k - i < 2) return {Triangles{}};
   if (forbidden.count({i, k}) && !(i == 0 && k == n - 1)) return {};
   std::vector<Triangles> result;
@@ -39,7 +40,8 @@ HolePolygon random_hole(int n, std::mt19937& rng) {
   // The surrounding surface leans outwards and downwards, as around a hole in a curved mesh.
   for (int i = 0; i < n; ++i) {
     const Point mid = (polygon.points[i] + polygon.points[(i + 1) % n]) * 0.5;
-    polygon.outside_normals.push_back((Point(0, 0, 1) + 0.4 * Point(mid[0], mid[1], 0)).normalized());
+    polygon.outside_normals.push_back(
+        (Point(0, 0, 1) + 0.4 * Point(mid[0], mid[1], 0)).normalized());
   }
   return polygon;
 }
@@ -147,9 +149,11 @@ TEST(Triangulate, MaxMinOnPlanarConvexPolygonMatchesDelaunayMinAngle) {
           const double d = 2.0 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by));
           if (std::abs(d) < 1e-14) continue;
           const double ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay) +
-                             (cx * cx + cy * cy) * (ay - by)) / d;
+                             (cx * cx + cy * cy) * (ay - by)) /
+                            d;
           const double uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx) +
-                             (cx * cx + cy * cy) * (bx - ax)) / d;
+                             (cx * cx + cy * cy) * (bx - ax)) /
+                            d;
           const double r2 = (ax - ux) * (ax - ux) + (ay - uy) * (ay - uy);
           bool empty = true;
           for (int m = 0; m < n && empty; ++m) {
@@ -158,7 +162,8 @@ TEST(Triangulate, MaxMinOnPlanarConvexPolygonMatchesDelaunayMinAngle) {
             if (d2 < r2 * (1.0 - 1e-12)) empty = false;
           }
           if (empty) {
-            delaunay_min_angle = std::min(delaunay_min_angle, measure_triangle(p[i], p[j], p[k]).min_angle);
+            delaunay_min_angle =
+                std::min(delaunay_min_angle, measure_triangle(p[i], p[j], p[k]).min_angle);
           }
         }
       }

@@ -3,8 +3,16 @@
 // Solves Delta^k x = 0 (k = 2: bi-Laplacian / thin plate, k = 3: tri-Laplacian) for the
 // positions of the patch's own vertices, with the boundary and k-1 rings of surrounding
 // vertices held fixed, using cotangent (or uniform) weights and Eigen's sparse solvers.
+//
+// The operator is Delta = M^-1 K: K the stiffness matrix (cotangent weights, each cotangent
+// clamped to the cotangent of 1 degree and each edge weight to >= 0; or weight 1 per edge), M the
+// mixed Voronoi area of Meyer et al. 2003 (or the valence, with uniform weights, so that Delta is
+// Liepa's umbrella operator). The system solved is the symmetric form K (M^-1 K)^(k-1) x = 0 on
+// the patch's rows, which is positive definite whenever every patch vertex is connected to the
+// fixed ones, so a sparse Cholesky factorisation (LDLT) solves it.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "holefill/mesh.h"
@@ -20,9 +28,13 @@ struct FairOptions {
 struct FairResult {
   bool solved = false;  // false: positions unchanged, `problem` says why
   std::string problem;
+  std::size_t unknowns = 0;        // patch vertices solved for
+  std::size_t fixed_vertices = 0;  // boundary and surrounding rings held as boundary condition
+  double relative_residual = 0.0;  // |A x - b| / |b| of the solved system
 };
 
-// Moves only patch.new_vertices. Leaves the mesh unchanged when the system cannot be solved.
+// Moves only patch.new_vertices. Leaves the mesh unchanged when the system cannot be solved
+// (order outside 1..3, non-finite or degenerate geometry, a singular or ill-conditioned system).
 FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options = {});
 
 }  // namespace holefill

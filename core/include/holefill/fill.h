@@ -33,9 +33,9 @@ struct StageTimes {
 struct HoleFill {
   int hole_id = -1;
   std::size_t boundary_edges = 0;
-  Patch patch;            // patch.stage is the last stage run (Original: not started)
-  std::string failure;    // set when a stage could not run; the mesh is then unchanged
-  PatchStats stats;       // after the last stage run
+  Patch patch;          // patch.stage is the last stage run (Original: not started)
+  std::string failure;  // set when a stage could not run; the mesh is then unchanged
+  PatchStats stats;     // after the last stage run
   StageTimes times;
   RefineResult refinement;
   std::string smoothing_note;  // e.g. why fairing fell back to umbrella smoothing

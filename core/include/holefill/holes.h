@@ -13,7 +13,7 @@ struct Hole {
   std::vector<VertexHandle> vertices;     // P0 ... Pn-1
   std::vector<HalfedgeHandle> halfedges;  // halfedges[i] runs vertices[i] -> vertices[i+1 mod n]
   double perimeter = 0.0;
-  Point centroid{0.0, 0.0, 0.0};  // mean of the boundary vertices
+  Point centroid{0.0, 0.0, 0.0};              // mean of the boundary vertices
   double mean_surrounding_edge_length = 0.0;  // over all edges at the boundary vertices
   // A vertex occurs more than once on this loop or on several loops (two holes touch there).
   bool pinched = false;

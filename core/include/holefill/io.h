@@ -13,7 +13,7 @@ namespace holefill {
 
 // What loading had to change or noticed, for the user to read.
 struct LoadReport {
-  std::size_t polygons_triangulated = 0;   // faces with more than 3 corners
+  std::size_t polygons_triangulated = 0;     // faces with more than 3 corners
   std::size_t degenerate_faces_dropped = 0;  // faces using a vertex twice
   std::size_t faces_detached = 0;  // faces that would make an edge non-manifold, given own vertices
   std::vector<std::string> warnings;

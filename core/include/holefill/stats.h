@@ -13,7 +13,7 @@ struct PatchStats {
   std::size_t new_vertices = 0;
   std::size_t new_faces = 0;
   std::map<int, std::size_t> valence_histogram;  // valence -> number of new patch vertices
-  double min_angle_deg = 0.0;       // smallest interior angle of any patch triangle
+  double min_angle_deg = 0.0;                    // smallest interior angle of any patch triangle
   double mean_min_angle_deg = 0.0;  // mean over patch triangles of their smallest angle
   double max_dihedral_deg = 0.0;    // over edges of patch faces, hole boundary included
   double area = 0.0;

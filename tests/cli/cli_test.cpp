@@ -1,0 +1,155 @@
+// The holefill command on the bundled assets: exit codes, the table, the JSON report, and that
+// a failure never leaves a partial output file.
+#include "cli.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "holefill/holes.h"
+#include "holefill/io.h"
+#include "test_meshes.h"
+
+namespace holefill {
+namespace {
+namespace fs = std::filesystem;
+
+const fs::path kAssets = HOLEFILL_ASSETS_DIR;
+
+struct CliRun {
+  int code;
+  std::string out, err;
+};
+
+CliRun holefill_cli(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int code = cli::run(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("holefill_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string in_dir(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST_F(Cli, InfoListsTheBunnysThreeHoles) {
+  const CliRun run = holefill_cli({"info", (kAssets / "bunny.obj").string()});
+  EXPECT_EQ(run.code, cli::kOk) << run.err;
+  EXPECT_NE(run.out.find("3 holes"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("1 components"), std::string::npos) << run.out;
+}
+
+TEST_F(Cli, FillWritesAClosedMeshAndAReport) {
+  const std::string out = in_dir("bunny.ply"), report = in_dir("report.json");
+  const CliRun run = holefill_cli(
+      {"fill", (kAssets / "bunny.obj").string(), "-o", out, "--report", report, "--tau", "1.2"});
+  ASSERT_EQ(run.code, cli::kOk) << run.err;
+  const Mesh before = load_mesh(kAssets / "bunny.obj");
+  const Mesh after = load_mesh(out);
+  EXPECT_TRUE(find_holes(after).empty());
+  EXPECT_GT(after.n_faces(), before.n_faces());
+  const std::string json = read_text(report);
+  EXPECT_NE(json.find("\"holes\": 0"), std::string::npos) << json;  // none left after
+  EXPECT_NE(json.find("\"tau\": 1.2"), std::string::npos);
+  EXPECT_NE(json.find("\"valence_histogram\""), std::string::npos);
+  // Three per-hole entries, each filled.
+  std::size_t filled = 0;
+  for (std::size_t at = json.find("\"filled\": true"); at != std::string::npos;
+       at = json.find("\"filled\": true", at + 1)) {
+    ++filled;
+  }
+  EXPECT_EQ(filled, 3u);
+  EXPECT_FALSE(fs::exists(report + ".partial"));
+}
+
+TEST_F(Cli, FillKeepsTheOriginalPartBitForBit) {
+  const std::string out = in_dir("sphere.obj");
+  ASSERT_EQ(holefill_cli({"fill", (kAssets / "sphere.obj").string(), "-o", out}).code, cli::kOk);
+  EXPECT_TRUE(testing::original_part_unchanged(load_mesh(kAssets / "sphere.obj"), load_mesh(out)));
+}
+
+TEST_F(Cli, SelectedHolesOnly) {
+  const std::string out = in_dir("two.obj");
+  const CliRun run = holefill_cli({"fill", (kAssets / "bunny.obj").string(), "-o", out, "--holes",
+                                   "1,2", "--stage", "triangulate"});
+  ASSERT_EQ(run.code, cli::kOk) << run.err;
+  const auto holes = find_holes(load_mesh(out));
+  ASSERT_EQ(holes.size(), 1u);
+  EXPECT_EQ(holes[0].size(), find_holes(load_mesh(kAssets / "bunny.obj"))[0].size());
+}
+
+TEST_F(Cli, MaxBoundarySkipsLargerHoles) {
+  const std::string out = in_dir("small.obj");
+  ASSERT_EQ(
+      holefill_cli({"fill", (kAssets / "bunny.obj").string(), "-o", out, "--max-boundary", "40"})
+          .code,
+      cli::kOk);
+  EXPECT_EQ(find_holes(load_mesh(out)).size(), 1u);  // the 99-edge hole stays
+}
+
+TEST_F(Cli, UsageErrorsExitWithTwoAndWriteNothing) {
+  const std::string bunny = (kAssets / "bunny.obj").string(), out = in_dir("x.obj");
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"fill", bunny},
+        {"fill", bunny, "-o", out, "--weight", "best"},
+        {"fill", bunny, "-o", out, "--tau", "-1"},
+        {"fill", bunny, "-o", out, "--tau", "abc"},
+        {"fill", bunny, "-o", out, "--holes", "7"},
+        {"fill", bunny, "-o", out, "--bogus"},
+        {"fill", bunny, "-o", out, "--smooth-iterations", "2.5"},
+        {"frobnicate"},
+        {"info"}}) {
+    const CliRun run = holefill_cli(args);
+    EXPECT_EQ(run.code, cli::kUsage) << args.back();
+    EXPECT_FALSE(run.err.empty());
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+TEST_F(Cli, BadInputExitsWithThreeNamingTheFile) {
+  const std::string broken = in_dir("broken.obj"), out = in_dir("x.obj");
+  std::ofstream(broken) << "v 0 0 0\nv 1 1 nan\nv 0 1 0\nf 1 2 3\n";
+  for (const std::string& input : {broken, in_dir("missing.off")}) {
+    const CliRun run = holefill_cli({"fill", input, "-o", out});
+    EXPECT_EQ(run.code, cli::kBadInput);
+    EXPECT_NE(run.err.find(input), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+TEST_F(Cli, UnwritableOutputExitsWithFourAndLeavesNoPartialFile) {
+  const CliRun run =
+      holefill_cli({"fill", (kAssets / "bunny.obj").string(), "-o", in_dir("no/such/dir/x.obj")});
+  EXPECT_EQ(run.code, cli::kWriteFailed);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator{}), 0);
+}
+
+TEST_F(Cli, HelpForEachCommand) {
+  for (const auto& args :
+       {std::vector<std::string>{"--help"}, {"help", "fill"}, {"fill", "--help"}, {"info", "-h"}}) {
+    const CliRun run = holefill_cli(args);
+    EXPECT_EQ(run.code, cli::kOk);
+    EXPECT_NE(run.out.find("usage"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace holefill
