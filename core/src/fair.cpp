@@ -1,9 +1,243 @@
 #include "holefill/fair.h"
 
-namespace holefill {
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <vector>
 
-FairResult fair_patch(Mesh&, const Patch&, const FairOptions&) {
-  return {false, "fairing is not available yet"};
+namespace holefill {
+namespace {
+
+// Cotangents are clamped to the cotangent of 1 degree: a sliver triangle must not give one edge
+// a weight thousands of times its neighbours' (which ruins the conditioning), and a zero-area
+// triangle must not give an infinite one.
+const double kMaxCotangent = 1.0 / std::tan(M_PI / 180.0);
+// A vertex whose area is below this fraction of the mean area is degenerate (M^-1 would blow up).
+constexpr double kMinRelativeArea = 1e-12;
+// Smallest to largest LDLT pivot below this: the system is numerically singular.
+constexpr double kMinPivotRatio = 1e-14;
+// Relative residual above this: the solve did not produce an answer worth keeping.
+constexpr double kMaxRelativeResidual = 1e-6;
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+// The vertices the operator touches: the patch's own vertices (ring 0, the unknowns) first, then
+// the rings around them up to `order` (the fixed ones), with their ring number.
+struct Region {
+  std::vector<VertexHandle> vertices;
+  std::vector<int> ring;
+  std::unordered_map<int, int> index;  // vertex idx -> position in `vertices`
+  std::size_t unknowns = 0;
+};
+
+Region gather_region(const Mesh& mesh, const std::vector<VertexHandle>& new_vertices, int order) {
+  Region region;
+  auto add = [&](VertexHandle v, int ring) {
+    if (region.index.emplace(v.idx(), static_cast<int>(region.vertices.size())).second) {
+      region.vertices.push_back(v);
+      region.ring.push_back(ring);
+    }
+  };
+  for (const auto v : new_vertices) add(v, 0);
+  region.unknowns = region.vertices.size();
+  std::size_t ring_begin = 0;
+  for (int ring = 1; ring <= order; ++ring) {
+    const std::size_t ring_end = region.vertices.size();
+    for (std::size_t i = ring_begin; i < ring_end; ++i) {
+      for (const auto w : mesh.vv_range(region.vertices[i])) add(w, ring);
+    }
+    ring_begin = ring_end;
+  }
+  return region;
+}
+
+// Cotangent of the angle at `corner` in the triangle (corner, a, b), clamped; 0 when two of the
+// points coincide (the angle is undefined, so the triangle contributes nothing).
+double clamped_cotangent(const Point& corner, const Point& a, const Point& b) {
+  const Point u = a - corner, v = b - corner;
+  const double sine = OpenMesh::cross(u, v).norm(), cosine = OpenMesh::dot(u, v);
+  if (sine == 0.0 && cosine == 0.0) return 0.0;
+  if (sine * kMaxCotangent <= std::abs(cosine))
+    return cosine > 0.0 ? kMaxCotangent : -kMaxCotangent;
+  return cosine / sine;
+}
+
+// Half the cotangent of the angle opposite halfedge h in its face; 0 on a boundary halfedge.
+double half_cotangent_opposite(const Mesh& mesh, HalfedgeHandle h) {
+  if (mesh.is_boundary(h)) return 0.0;
+  const Point& corner = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
+  return 0.5 * clamped_cotangent(corner, mesh.point(mesh.from_vertex_handle(h)),
+                                 mesh.point(mesh.to_vertex_handle(h)));
+}
+
+// The edge's cotangent weight (cot alpha + cot beta) / 2, clamped to >= 0 so that the stiffness
+// matrix stays an M-matrix; on a locally Delaunay edge (all refined patch edges) it already is.
+double cotangent_weight(const Mesh& mesh, HalfedgeHandle h) {
+  const double weight = half_cotangent_opposite(mesh, h) +
+                        half_cotangent_opposite(mesh, mesh.opposite_halfedge_handle(h));
+  return std::max(weight, 0.0);
+}
+
+// The mixed Voronoi area of vertex p in triangle (p, q, r) (Meyer, Desbrun, Schroeder & Barr
+// 2003): the Voronoi region when the triangle is not obtuse, otherwise a fixed share of its area,
+// so it is never negative and the areas around a vertex sum to its share of the surface.
+double mixed_area(const Point& p, const Point& q, const Point& r) {
+  const double area = 0.5 * OpenMesh::cross(q - p, r - p).norm();
+  if (!(area > 0.0)) return 0.0;
+  const bool obtuse_p = OpenMesh::dot(q - p, r - p) < 0.0;
+  const bool obtuse_q = OpenMesh::dot(p - q, r - q) < 0.0;
+  const bool obtuse_r = OpenMesh::dot(p - r, q - r) < 0.0;
+  if (obtuse_p) return 0.5 * area;
+  if (obtuse_q || obtuse_r) return 0.25 * area;
+  const double cot_q = OpenMesh::dot(p - q, r - q) / (2.0 * area);
+  const double cot_r = OpenMesh::dot(p - r, q - r) / (2.0 * area);
+  return ((r - p).sqrnorm() * cot_q + (q - p).sqrnorm() * cot_r) / 8.0;
+}
+
+double vertex_area(const Mesh& mesh, VertexHandle v) {
+  double area = 0.0;
+  for (const auto h : mesh.voh_range(v)) {
+    if (mesh.is_boundary(h)) continue;
+    area += mixed_area(mesh.point(v), mesh.point(mesh.to_vertex_handle(h)),
+                       mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h))));
+  }
+  return area;
+}
+
+// The stiffness matrix K (positive semi-definite: K x = -sum w_ij (x_j - x_i)) on the rows of
+// the vertices within order-1 rings of the patch (the rows Delta^k needs), and the inverse
+// masses of those rows, normalised by their mean so that the entries stay near 1.
+struct Operator {
+  SparseMatrix stiffness;
+  Eigen::VectorXd inverse_mass;
+  std::string problem;
+};
+
+Operator build_operator(const Mesh& mesh, const Region& region, const FairOptions& options) {
+  Operator op;
+  const int n = static_cast<int>(region.vertices.size());
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd mass = Eigen::VectorXd::Zero(n);
+  std::vector<int> rows;
+  for (int i = 0; i < n; ++i) {
+    if (region.ring[i] >= options.order) continue;
+    rows.push_back(i);
+    const VertexHandle v = region.vertices[i];
+    double diagonal = 0.0;
+    for (const auto h : mesh.voh_range(v)) {
+      const double weight = options.cotangent_weights ? cotangent_weight(mesh, h) : 1.0;
+      entries.emplace_back(i, region.index.at(mesh.to_vertex_handle(h).idx()), -weight);
+      diagonal += weight;
+    }
+    if (!(diagonal > 0.0)) {
+      op.problem = "degenerate patch: vertex " + std::to_string(v.idx()) + " has no usable edge";
+      return op;
+    }
+    entries.emplace_back(i, i, diagonal);
+    mass[i] = options.cotangent_weights ? vertex_area(mesh, v) : diagonal;
+  }
+  double mean_mass = 0.0;
+  for (const int i : rows) mean_mass += mass[i];
+  mean_mass /= static_cast<double>(rows.size());
+  op.inverse_mass = Eigen::VectorXd::Zero(n);
+  for (const int i : rows) {
+    if (!(mass[i] > kMinRelativeArea * mean_mass)) {
+      op.problem = "degenerate patch: vertex " + std::to_string(region.vertices[i].idx()) +
+                   " has (nearly) zero area";
+      return op;
+    }
+    op.inverse_mass[i] = mean_mass / mass[i];
+  }
+  op.stiffness.resize(n, n);
+  op.stiffness.setFromTriplets(entries.begin(), entries.end());
+  return op;
+}
+
+}  // namespace
+
+FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options) {
+  FairResult result;
+  if (options.order < 1 || options.order > 3) {
+    result.problem = "fairing order must be 1, 2 or 3, got " + std::to_string(options.order);
+    return result;
+  }
+  for (const auto v : patch.new_vertices) {
+    if (!v.is_valid() || static_cast<std::size_t>(v.idx()) >= mesh.n_vertices() ||
+        mesh.status(v).deleted()) {
+      result.problem = "the patch lists a vertex that is not in the mesh";
+      return result;
+    }
+  }
+  const Region region = gather_region(mesh, patch.new_vertices, options.order);
+  const int n = static_cast<int>(region.vertices.size());
+  const int unknowns = static_cast<int>(region.unknowns), fixed = n - unknowns;
+  result.unknowns = region.unknowns;
+  result.fixed_vertices = static_cast<std::size_t>(fixed);
+  if (unknowns == 0) {
+    result.solved = true;
+    return result;
+  }
+  if (fixed == 0) {
+    result.problem = "no fixed vertices around the patch to continue";
+    return result;
+  }
+  Eigen::MatrixXd positions(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const Point& p = mesh.point(region.vertices[i]);
+    positions.row(i) << p[0], p[1], p[2];
+  }
+  if (!positions.allFinite()) {
+    result.problem = "non-finite vertex coordinates in or around the patch";
+    return result;
+  }
+
+  const Operator op = build_operator(mesh, region, options);
+  if (!op.problem.empty()) {
+    result.problem = op.problem;
+    return result;
+  }
+  // K (M^-1 K)^(k-1): symmetric positive definite on the unknowns' block.
+  SparseMatrix system = op.stiffness;
+  for (int power = 1; power < options.order; ++power) {
+    system = SparseMatrix(op.stiffness * op.inverse_mass.asDiagonal() * system);
+  }
+  const SparseMatrix on_unknowns = system.block(0, 0, unknowns, unknowns);
+  const SparseMatrix on_fixed = system.block(0, unknowns, unknowns, fixed);
+  const Eigen::MatrixXd rhs = -(on_fixed * positions.bottomRows(fixed));
+
+  Eigen::SimplicialLDLT<SparseMatrix> solver(on_unknowns);
+  if (solver.info() != Eigen::Success) {
+    result.problem = "the fairing system could not be factorised (singular or not positive)";
+    return result;
+  }
+  const Eigen::VectorXd pivots = solver.vectorD();
+  const double smallest = pivots.minCoeff(), largest = pivots.cwiseAbs().maxCoeff();
+  if (!(smallest > 0.0)) {
+    result.problem =
+        "the fairing system is singular (a patch vertex is not tied to the fixed ones)";
+    return result;
+  }
+  if (!(smallest > kMinPivotRatio * largest)) {
+    result.problem = "the fairing system is ill-conditioned (pivot ratio " +
+                     std::to_string(smallest / largest) + ")";
+    return result;
+  }
+  const Eigen::MatrixXd solution = solver.solve(rhs);
+  const double rhs_norm = rhs.norm();
+  result.relative_residual =
+      rhs_norm > 0.0 ? (on_unknowns * solution - rhs).norm() / rhs_norm : solution.norm();
+  if (!solution.allFinite() || !(result.relative_residual <= kMaxRelativeResidual)) {
+    result.problem = "the fairing solve is inaccurate (relative residual " +
+                     std::to_string(result.relative_residual) + ")";
+    return result;
+  }
+  for (int i = 0; i < unknowns; ++i) {
+    mesh.set_point(region.vertices[i], Point(solution(i, 0), solution(i, 1), solution(i, 2)));
+  }
+  result.solved = true;
+  return result;
 }
 
 }  // namespace holefill
