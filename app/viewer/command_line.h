@@ -1,0 +1,36 @@
+// The viewer's command line: a mesh to open, and the scripted mode (select a hole, run stages,
+// compare, save a screenshot, exit) used by the GUI test and to make the docs' screenshots.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "holefill/patch.h"
+
+namespace holefill::viewer {
+
+struct CommandLine {
+  std::filesystem::path mesh;          // empty: the bundled bunny
+  std::optional<int> select_hole;
+  std::vector<Stage> run;              // stages to run on the selected hole, in order
+  bool fill_all = false;
+  bool compare = false;
+  bool compare_triangulation_only = false;
+  int width = 1280;
+  int height = 800;
+  std::filesystem::path screenshot;    // set: render, save this PNG and exit
+  bool help = false;
+};
+
+// Parses argv; throws std::invalid_argument with a message for the user on bad arguments.
+CommandLine parse_command_line(const std::vector<std::string>& arguments);
+
+const char* usage();
+
+// The bundled bunny: the source tree's assets/ (compiled in), else assets/ beside or above the
+// executable's folder.
+std::filesystem::path default_mesh_path(const std::filesystem::path& executable);
+
+}  // namespace holefill::viewer

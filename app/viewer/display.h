@@ -1,0 +1,12 @@
+// How the scene is drawn: choices the panels change and the renderer reads.
+#pragma once
+
+namespace holefill::viewer {
+
+struct DisplayOptions {
+  bool wireframe = true;
+  bool flat = false;
+  bool patch_vertices = true;
+};
+
+}  // namespace holefill::viewer

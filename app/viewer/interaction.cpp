@@ -1,0 +1,107 @@
+#include "interaction.h"
+
+#include <algorithm>
+
+#include "scene_arrays.h"
+
+namespace holefill::viewer {
+
+std::vector<PickLoop> pick_loops(const Session& session) {
+  std::vector<PickLoop> loops;
+  for (const auto& hole : session.holes()) {
+    loops.push_back({hole.id, boundary_points(session.mesh(), hole)});
+  }
+  return loops;
+}
+
+std::optional<int> hole_under_cursor(const Session& session, const Camera& camera,
+                                     const SceneArea& area, const glm::vec2& cursor) {
+  PickView view;
+  view.view_projection = camera.projection() * camera.view();
+  view.viewport_origin = area.origin;
+  view.viewport_size = area.size;
+  return pick_hole(pick_loops(session), view, cursor);
+}
+
+void fit_mesh(Camera& camera, const Session& session) {
+  const Mesh& mesh = session.mesh();
+  glm::vec3 lo(0.0f), hi(0.0f);
+  bool first = true;
+  for (const auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    const glm::vec3 q(p[0], p[1], p[2]);
+    lo = first ? q : glm::min(lo, q);
+    hi = first ? q : glm::max(hi, q);
+    first = false;
+  }
+  camera.fit(lo, hi);
+}
+
+void frame_hole(Camera& camera, const Session& session, int hole_id) {
+  if (hole_id < 0 || hole_id >= static_cast<int>(session.holes().size())) return;
+  const Hole& hole = session.holes()[hole_id];
+  const auto points = boundary_points(session.mesh(), hole);
+  glm::vec3 center(0.0f);
+  for (const auto& p : points) center += p;
+  center /= static_cast<float>(std::max<std::size_t>(points.size(), 1));
+  float radius = 0.0f;
+  for (const auto& p : points) radius = std::max(radius, glm::length(p - center));
+  camera.frame(center, hole_view_direction(session.mesh(), hole), 1.6f * radius);
+}
+
+void Interaction::handle(const InputEvent& event, const SceneArea& area, bool ui_wants_mouse,
+                         bool ui_wants_keyboard, Camera& camera, Session& session) {
+  camera.set_viewport(area.size);
+  const glm::vec2 local = event.cursor - area.origin;
+  switch (event.kind) {
+    case InputEvent::Kind::ButtonDown:
+      if (ui_wants_mouse || !area.contains(event.cursor)) return;
+      press_ = last_ = event.cursor;
+      drag_ = event.button == MouseButton::Left && !event.shift ? Drag::Pending : Drag::Pan;
+      break;
+    case InputEvent::Kind::CursorMove:
+      if (drag_ == Drag::Pending && glm::length(event.cursor - press_) > 3.0f) {
+        drag_ = Drag::Orbit;
+        camera.begin_orbit(press_ - area.origin);
+      }
+      if (drag_ == Drag::Orbit) camera.orbit_to(local);
+      if (drag_ == Drag::Pan) camera.pan(event.cursor - last_);
+      last_ = event.cursor;
+      if (drag_ == Drag::None) {
+        const bool over_scene = !ui_wants_mouse && area.contains(event.cursor);
+        const auto hole = over_scene ? hole_under_cursor(session, camera, area, event.cursor)
+                                     : std::nullopt;
+        hovered_ = hole.value_or(-1);
+      }
+      break;
+    case InputEvent::Kind::ButtonUp:
+      if (drag_ == Drag::Pending) {
+        if (const auto hole = hole_under_cursor(session, camera, area, event.cursor)) {
+          session.select(*hole);
+        }
+      }
+      drag_ = Drag::None;
+      break;
+    case InputEvent::Kind::Scroll:
+      if (!ui_wants_mouse && area.contains(event.cursor)) camera.zoom(event.scroll, local);
+      break;
+    case InputEvent::Kind::Key:
+      if (ui_wants_keyboard) return;
+      if (event.control && event.key == 'Z') {
+        if (event.shift) session.redo(); else session.undo();
+      } else if (event.control && event.key == 'Y') {
+        session.redo();
+      } else if (event.key == 'F') {
+        if (session.selected() >= 0) frame_hole(camera, session, session.selected());
+        else fit_mesh(camera, session);
+      } else if (event.key == 'R') {
+        camera.reset();
+      }
+      break;
+    case InputEvent::Kind::Drop:
+      if (session.open(event.path)) fit_mesh(camera, session);
+      break;
+  }
+}
+
+}  // namespace holefill::viewer

@@ -1,0 +1,53 @@
+// What mouse and keys do in the 3D view: left drag orbits (arcball), right or middle drag (or
+// shift + left) pans, the wheel zooms toward the cursor, a left click picks a hole, F frames
+// the selected hole (or the mesh), R resets the view, Ctrl+Z / Ctrl+Y undo and redo, a dropped
+// file is opened. No GL: it moves the camera and calls the session.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "camera.h"
+#include "events.h"
+#include "picking.h"
+#include "session.h"
+
+namespace holefill::viewer {
+
+// The part of the window the 3D view covers, in window pixels.
+struct SceneArea {
+  glm::vec2 origin{0.0f};
+  glm::vec2 size{1.0f};
+  bool contains(const glm::vec2& p) const {
+    return p.x >= origin.x && p.y >= origin.y && p.x < origin.x + size.x && p.y < origin.y + size.y;
+  }
+};
+
+// Every hole's boundary loop on the session's mesh, for picking.
+std::vector<PickLoop> pick_loops(const Session& session);
+
+// The hole under `cursor` (window pixels) as the camera sees it.
+std::optional<int> hole_under_cursor(const Session& session, const Camera& camera,
+                                     const SceneArea& area, const glm::vec2& cursor);
+
+// Fits the camera to the whole mesh.
+void fit_mesh(Camera& camera, const Session& session);
+// Centres the camera on a hole, looking at it from outside the surface.
+void frame_hole(Camera& camera, const Session& session, int hole_id);
+
+class Interaction {
+ public:
+  // `ui_wants_mouse` / `ui_wants_keyboard`: the UI took the input (ImGui's WantCapture...).
+  void handle(const InputEvent& event, const SceneArea& area, bool ui_wants_mouse,
+              bool ui_wants_keyboard, Camera& camera, Session& session);
+  int hovered() const { return hovered_; }
+
+ private:
+  enum class Drag { None, Pending, Orbit, Pan };
+  Drag drag_ = Drag::None;
+  glm::vec2 press_{0.0f};
+  glm::vec2 last_{0.0f};
+  int hovered_ = -1;
+};
+
+}  // namespace holefill::viewer

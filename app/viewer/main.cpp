@@ -1,0 +1,170 @@
+// holefill-viewer: open a mesh, see its holes, fill them stage by stage (issue #3).
+// The frame loop is the one of Dear ImGui's GLFW + OpenGL 3 example: poll, new frame, build the
+// UI, render the scene, render the UI, swap. Scripted mode (--screenshot) runs the requested
+// actions first, renders a few frames, saves the PNG and exits.
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "camera.h"
+#include "command_line.h"
+#include "interaction.h"
+#include "panels.h"
+#include "renderer.h"
+#include "screenshot.h"
+#include "session.h"
+#include "window.h"
+
+namespace hv = holefill::viewer;
+
+namespace {
+
+// Carries out the command line's actions on the session; false (with a message) on failure.
+bool run_script(const hv::CommandLine& command, hv::Session& session) {
+  if (command.select_hole) {
+    if (*command.select_hole < 0 ||
+        *command.select_hole >= static_cast<int>(session.holes().size())) {
+      std::fprintf(stderr, "holefill-viewer: --select-hole %d: the mesh has %zu holes\n",
+                   *command.select_hole, session.holes().size());
+      return false;
+    }
+    session.select(*command.select_hole);
+  }
+  for (const auto stage : command.run) {
+    if (!session.step(stage)) {
+      std::fprintf(stderr, "holefill-viewer: cannot run %s on hole %d%s%s\n",
+                   holefill::to_string(stage), session.selected(),
+                   session.notice().error ? ": " : " (stages run in order)",
+                   session.notice().error ? session.notice().text.c_str() : "");
+      return false;
+    }
+  }
+  if (command.fill_all) session.fill_all();
+  session.set_compare_triangulation_only(command.compare_triangulation_only);
+  session.set_compare(command.compare);
+  return true;
+}
+
+hv::SceneArea scene_area(const hv::Window& window) {
+  const glm::vec2 size = window.size();
+  return {{hv::kPanelWidth, 0.0f}, {std::max(size.x - hv::kPanelWidth, 1.0f), size.y}};
+}
+
+hv::PixelRect to_framebuffer(const hv::SceneArea& area, const hv::Window& window) {
+  const glm::vec2 scale = glm::vec2(window.framebuffer_size()) / glm::max(glm::vec2(window.size()), 1.0f);
+  return {static_cast<int>(area.origin.x * scale.x), static_cast<int>(area.origin.y * scale.y),
+          static_cast<int>(area.size.x * scale.x), static_cast<int>(area.size.y * scale.y)};
+}
+
+void save_screenshot(const hv::Renderer& renderer, const hv::Window& window,
+                     const std::filesystem::path& path) {
+  const glm::ivec2 size = window.framebuffer_size();
+  hv::write_png(path, size.x, size.y, renderer.read_pixels(size.x, size.y));
+}
+
+int run(const hv::CommandLine& command, const char* executable) {
+  hv::Session session;
+  const auto mesh_path = command.mesh.empty() ? hv::default_mesh_path(executable) : command.mesh;
+  const bool scripted = !command.screenshot.empty();
+  if (!session.open(mesh_path) && scripted) {
+    std::fprintf(stderr, "holefill-viewer: %s\n", session.notice().text.c_str());
+    return 3;
+  }
+  if (scripted && !run_script(command, session)) return 2;
+
+  hv::Window window(command.width, command.height, "holefill viewer");
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; no imgui.ini next to the user's files
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+
+  hv::Renderer renderer;
+  hv::Camera camera;
+  hv::Interaction interaction;
+  hv::UiState ui;
+  ui.mesh_path = mesh_path.string();
+  camera.set_viewport(scene_area(window).size);
+  hv::fit_mesh(camera, session);
+  if (session.selected() >= 0) hv::frame_hole(camera, session, session.selected());
+
+  int status = 0;
+  for (int frame = 0; !window.should_close(); ++frame) {
+    const hv::SceneArea area = scene_area(window);
+    for (const auto& event : window.poll()) {
+      interaction.handle(event, area, ImGui::GetIO().WantCaptureMouse,
+                         ImGui::GetIO().WantCaptureKeyboard, camera, session);
+    }
+    camera.set_viewport(area.size);
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    hv::draw_panels(session, ui, static_cast<float>(window.size().y));
+    ImGui::Render();
+    if (ui.mesh_opened) hv::fit_mesh(camera, session);
+    if (ui.fit_view) hv::fit_mesh(camera, session);
+    if (ui.reset_view) camera.reset();
+    if (ui.frame_selected) hv::frame_hole(camera, session, session.selected());
+    ui.mesh_opened = ui.fit_view = ui.reset_view = ui.frame_selected = false;
+
+    const glm::ivec2 framebuffer = window.framebuffer_size();
+    renderer.render(session, camera, to_framebuffer(area, window), framebuffer.x, framebuffer.y,
+                    ui.display, interaction.hovered());
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+    if (ui.take_screenshot) {
+      ui.take_screenshot = false;
+      try {
+        save_screenshot(renderer, window, ui.screenshot_path);
+        std::printf("saved %s\n", ui.screenshot_path.c_str());
+      } catch (const std::exception& error) {
+        std::fprintf(stderr, "holefill-viewer: %s\n", error.what());
+      }
+    }
+    // ImGui lays windows out over its first frames; a few frames settle the picture.
+    if (scripted && frame >= 3) {
+      try {
+        save_screenshot(renderer, window, command.screenshot);
+      } catch (const std::exception& error) {
+        std::fprintf(stderr, "holefill-viewer: %s\n", error.what());
+        status = 4;
+      }
+      window.request_close();
+    }
+    window.swap();
+  }
+
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  hv::CommandLine command;
+  try {
+    command = hv::parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "holefill-viewer: %s\n\n%s", error.what(), hv::usage());
+    return 2;
+  }
+  if (command.help) {
+    std::fputs(hv::usage(), stdout);
+    return 0;
+  }
+  try {
+    return run(command, argv[0]);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "holefill-viewer: %s\n", error.what());
+    return 1;
+  }
+}

@@ -1,0 +1,278 @@
+#include "panels.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace holefill::viewer {
+namespace {
+
+constexpr float kSqrt2 = 1.41421356f;
+const ImVec4 kErrorColor{1.0f, 0.45f, 0.4f, 1.0f};
+
+void histogram(const char* id, const std::map<int, std::size_t>& valences, float height) {
+  if (valences.empty()) {
+    ImGui::TextDisabled("(no vertices)");
+    return;
+  }
+  const int first = std::min(3, valences.begin()->first);
+  const int last = std::max(9, valences.rbegin()->first);
+  std::vector<float> counts(static_cast<std::size_t>(last - first + 1), 0.0f);
+  float most = 0.0f;
+  for (const auto& [valence, count] : valences) {
+    counts[static_cast<std::size_t>(valence - first)] = static_cast<float>(count);
+    most = std::max(most, static_cast<float>(count));
+  }
+  char label[64];
+  std::snprintf(label, sizeof label, "valence %d .. %d", first, last);
+  ImGui::PlotHistogram(id, counts.data(), static_cast<int>(counts.size()), 0, label, 0.0f,
+                       most * 1.1f, ImVec2(-1.0f, height));
+}
+
+void patch_statistics(const HoleFill& fill) {
+  if (fill.failed()) {
+    ImGui::TextColored(kErrorColor, "Failed: %s", fill.failure.c_str());
+    return;
+  }
+  if (fill.stage() == Stage::Original) {
+    ImGui::TextDisabled("Not filled yet.");
+    return;
+  }
+  const PatchStats& s = fill.stats;
+  ImGui::Text("Stage: %s", to_string(fill.stage()));
+  ImGui::Text("New vertices %zu   new faces %zu", s.new_vertices, s.new_faces);
+  ImGui::Text("Min angle %.2f deg (mean %.2f)", s.min_angle_deg, s.mean_min_angle_deg);
+  ImGui::Text("Max dihedral %.2f deg   area %.4g", s.max_dihedral_deg, s.area);
+  ImGui::Text("Times: tri %.1f  ref %.1f  smo %.1f ms", 1e3 * fill.times.triangulate_seconds,
+              1e3 * fill.times.refine_seconds, 1e3 * fill.times.smooth_seconds);
+}
+
+void file_section(Session& session, UiState& ui) {
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::InputTextWithHint("##path", "mesh path (.obj .off .ply .stl)", &ui.mesh_path);
+  if (ImGui::Button("Open")) ui.mesh_opened = session.open(ui.mesh_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Save")) session.save(ui.mesh_path);
+  ImGui::SameLine();
+  ImGui::TextDisabled("or drop a file on the window");
+  const Notice& notice = session.notice();
+  if (!notice.text.empty()) {
+    if (notice.error) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+    ImGui::TextWrapped("%s", notice.text.c_str());
+    if (notice.error) ImGui::PopStyleColor();
+    if (ImGui::SmallButton("Dismiss")) session.clear_notice();
+  }
+}
+
+void hole_list(Session& session, UiState& ui) {
+  ImGui::Text("%s: %zu holes", session.name().c_str(), session.holes().size());
+  const float rows = static_cast<float>(std::min<std::size_t>(session.holes().size(), 6) + 1);
+  if (ImGui::BeginTable("holes", 4,
+                        ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersOuter,
+                        ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 6.0f))) {
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableSetupColumn("hole");
+    ImGui::TableSetupColumn("edges");
+    ImGui::TableSetupColumn("perimeter");
+    ImGui::TableSetupColumn("stage");
+    ImGui::TableHeadersRow();
+    for (const auto& hole : session.holes()) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      char label[32];
+      std::snprintf(label, sizeof label, "%d", hole.id);
+      if (ImGui::Selectable(label, session.selected() == hole.id,
+                            ImGuiSelectableFlags_SpanAllColumns)) {
+        session.select(hole.id);
+      }
+      ImGui::TableNextColumn();
+      ImGui::Text("%zu", hole.size());
+      ImGui::TableNextColumn();
+      ImGui::Text("%.4g", hole.perimeter);
+      ImGui::TableNextColumn();
+      const HoleFill& fill = session.fill(hole.id);
+      ImGui::TextUnformatted(fill.failed() ? "failed" : to_string(fill.stage()));
+    }
+    ImGui::EndTable();
+  }
+  ImGui::BeginDisabled(session.selected() < 0);
+  if (ImGui::Button("Frame this hole")) ui.frame_selected = true;
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Fit view")) ui.fit_view = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Reset view")) ui.reset_view = true;
+}
+
+// The tau slider with a tick at sqrt(2), where Liepa's default sits.
+bool tau_slider(float& tau) {
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 70.0f);
+  const bool changed = ImGui::SliderFloat("##tau", &tau, 1.0f, 2.0f, "tau = %.3f");
+  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+  const float grab = ImGui::GetStyle().GrabMinSize;
+  const float x = lo.x + grab * 0.5f + (kSqrt2 - 1.0f) * (hi.x - lo.x - grab);
+  ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, lo.y + 5.0f),
+                                      IM_COL32(255, 220, 90, 255), 2.0f);
+  ImGui::GetWindowDrawList()->AddLine(ImVec2(x, hi.y - 5.0f), ImVec2(x, hi.y),
+                                      IM_COL32(255, 220, 90, 255), 2.0f);
+  ImGui::SameLine();
+  if (ImGui::Button("sqrt 2")) {
+    tau = kSqrt2;
+    return true;
+  }
+  return changed;
+}
+
+void options_section(Session& session) {
+  FillOptions options = session.options();
+  bool changed = false;
+  const WeightKind kinds[] = {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area};
+  ImGui::SetNextItemWidth(150.0f);
+  if (ImGui::BeginCombo("weight", to_string(options.triangulate.weight).c_str())) {
+    for (const auto kind : kinds) {
+      if (ImGui::Selectable(to_string(kind).c_str(), kind == options.triangulate.weight)) {
+        options.triangulate.weight = kind;
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  float tau = static_cast<float>(options.refine.tau);
+  if (tau_slider(tau)) {
+    options.refine.tau = std::abs(tau - kSqrt2) < 1e-6f ? std::sqrt(2.0) : tau;
+    changed = true;
+  }
+  ImGui::SetNextItemWidth(150.0f);
+  changed |= ImGui::SliderInt("smoothing iterations", &options.smooth.iterations, 0, 100);
+  float step = static_cast<float>(options.smooth.step);
+  ImGui::SetNextItemWidth(150.0f);
+  if (ImGui::SliderFloat("smoothing step", &step, 0.05f, 1.0f, "%.2f")) {
+    options.smooth.step = step;
+    changed = true;
+  }
+  if (changed) session.set_options(options);
+}
+
+void step_section(Session& session) {
+  const auto stage_button = [&](const char* label, Stage stage) {
+    ImGui::BeginDisabled(!session.can_step(stage));
+    if (ImGui::Button(label)) session.step(stage);
+    ImGui::EndDisabled();
+  };
+  stage_button("Triangulate", Stage::Triangulated);
+  ImGui::SameLine();
+  stage_button("Refine", Stage::Refined);
+  ImGui::SameLine();
+  stage_button("Smooth", Stage::Smoothed);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!session.next_stage());
+  if (ImGui::Button("Fill")) session.fill_selected();
+  ImGui::EndDisabled();
+
+  if (ImGui::Button("Fill all holes")) session.fill_all();
+  ImGui::SameLine();
+  const bool untouched = session.selected() < 0 ||
+                         (session.fill(session.selected()).stage() == Stage::Original &&
+                          !session.fill(session.selected()).failed());
+  ImGui::BeginDisabled(untouched);
+  if (ImGui::Button("Reset hole")) session.reset_selected();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!session.can_undo());
+  if (ImGui::Button("Undo")) session.undo();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!session.can_redo());
+  if (ImGui::Button("Redo")) session.redo();
+  ImGui::EndDisabled();
+}
+
+void statistics_section(Session& session) {
+  if (session.selected() >= 0) {
+    const HoleFill& fill = session.fill(session.selected());
+    ImGui::Text("Hole %d patch", session.selected());
+    patch_statistics(fill);
+    ImGui::TextUnformatted("Valences of the patch's new vertices");
+    histogram("##patch_valences", fill.stats.valence_histogram, 60.0f);
+  } else {
+    ImGui::TextDisabled("Select a hole: click on or inside its outline, or in the list.");
+  }
+  ImGui::Text("Valences of the whole mesh (%zu vertices)", session.mesh().n_vertices());
+  histogram("##mesh_valences", session.mesh_valences(), 60.0f);
+}
+
+void comparison_section(Session& session) {
+  bool compare = session.compare();
+  if (ImGui::Checkbox("Compare liepa | maxmin", &compare)) session.set_compare(compare);
+  ImGui::SameLine();
+  bool triangulation_only = session.compare_triangulation_only();
+  if (ImGui::Checkbox("triangulation only", &triangulation_only)) {
+    session.set_compare_triangulation_only(triangulation_only);
+  }
+  const Comparison* comparison = session.comparison();
+  if (!compare) return;
+  if (!comparison) {
+    ImGui::TextDisabled("Select a hole to compare.");
+    return;
+  }
+  if (ImGui::BeginTable("compare", 2, ImGuiTableFlags_BordersInnerV)) {
+    for (const ComparisonSide* side : {&comparison->left, &comparison->right}) {
+      ImGui::TableNextColumn();
+      ImGui::PushID(side == &comparison->left ? "left" : "right");
+      ImGui::Text("%s (%s)", to_string(side->weight).c_str(),
+                  side == &comparison->left ? "left" : "right");
+      const PatchStats& s = side->fill.stats;
+      if (side->fill.failed()) {
+        ImGui::TextColored(kErrorColor, "failed");
+      } else {
+        ImGui::Text("+%zu vertices, +%zu faces", s.new_vertices, s.new_faces);
+        ImGui::Text("min angle %.2f", s.min_angle_deg);
+        ImGui::Text("max dihedral %.2f", s.max_dihedral_deg);
+        ImGui::Text("area %.4g", s.area);
+      }
+      histogram("##valences", s.valence_histogram, 45.0f);
+      ImGui::PopID();
+    }
+    ImGui::EndTable();
+  }
+}
+
+void display_section(UiState& ui) {
+  ImGui::Checkbox("wireframe", &ui.display.wireframe);
+  ImGui::SameLine();
+  ImGui::Checkbox("flat shading", &ui.display.flat);
+  ImGui::SameLine();
+  ImGui::Checkbox("new vertices", &ui.display.patch_vertices);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 100.0f);
+  ImGui::InputText("##screenshot", &ui.screenshot_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot")) ui.take_screenshot = true;
+}
+
+}  // namespace
+
+void draw_panels(Session& session, UiState& ui, float window_height) {
+  ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, window_height));
+  ImGui::Begin("holefill", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  file_section(session, ui);
+  ImGui::Separator();
+  hole_list(session, ui);
+  ImGui::Separator();
+  options_section(session);
+  step_section(session);
+  ImGui::Separator();
+  statistics_section(session);
+  ImGui::Separator();
+  comparison_section(session);
+  ImGui::Separator();
+  display_section(ui);
+  ImGui::End();
+}
+
+}  // namespace holefill::viewer

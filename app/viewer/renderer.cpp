@@ -1,0 +1,158 @@
+#include "renderer.h"
+
+#include <algorithm>
+
+#include "palette.h"
+
+namespace holefill::viewer {
+namespace {
+
+glm::vec3 rgb(const palette::Rgb& c) { return glm::vec3(c[0], c[1], c[2]) / 255.0f; }
+glm::vec4 rgba(const palette::Rgb& c) { return glm::vec4(rgb(c), 1.0f); }
+
+void clear_rect(const PixelRect& rect, int framebuffer_height, const palette::Rgb& color) {
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(rect.x, framebuffer_height - rect.y - rect.height, rect.width, rect.height);
+  const glm::vec3 c = rgb(color);
+  glClearColor(c.r, c.g, c.b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+}
+
+template <class Layer>
+void upload(Layer& layer, const Mesh& mesh, const std::vector<Hole>& holes,
+            const std::vector<const HoleFill*>& fills) {
+  const SurfaceArrays arrays = surface_arrays(mesh, fills);
+  layer.surface.upload(arrays);
+  layer.boundary.upload(boundary_segments(mesh, holes));
+  layer.radius = std::max(0.5f * glm::length(arrays.hi - arrays.lo), 1e-6f);
+}
+
+}  // namespace
+
+Renderer::Renderer()
+    : surface_program_("surface.vert", "surface.frag"),
+      solid_program_("solid.vert", "solid.frag"),
+      line_program_("thick_line.vert", "thick_line.frag") {}
+
+std::pair<PixelRect, PixelRect> Renderer::comparison_halves(const PixelRect& scene) {
+  constexpr int kDivider = 4;
+  const int left_width = (scene.width - kDivider) / 2;
+  const PixelRect left{scene.x, scene.y, left_width, scene.height};
+  const PixelRect right{scene.x + left_width + kDivider, scene.y,
+                        scene.width - left_width - kDivider, scene.height};
+  return {left, right};
+}
+
+void Renderer::sync(Session& session) {
+  if (main_.version != session.mesh_version()) {
+    std::vector<const HoleFill*> fills;
+    for (const auto& hole : session.holes()) fills.push_back(&session.fill(hole.id));
+    upload(main_, session.mesh(), session.holes(), fills);
+    main_.version = session.mesh_version();
+  }
+  if (const Comparison* comparison = session.comparison();
+      comparison && left_.version != session.comparison_version()) {
+    upload(left_, comparison->left.mesh, session.holes(), {&comparison->left.fill});
+    upload(right_, comparison->right.mesh, session.holes(), {&comparison->right.fill});
+    left_.version = right_.version = session.comparison_version();
+  }
+}
+
+void Renderer::render(Session& session, const Camera& camera, const PixelRect& scene,
+                      int framebuffer_width, int framebuffer_height, const DisplayOptions& display,
+                      int hovered_hole) {
+  sync(session);
+  glViewport(0, 0, framebuffer_width, framebuffer_height);
+  clear_rect({0, 0, framebuffer_width, framebuffer_height}, framebuffer_height,
+             palette::kBackground);
+  if (session.comparison()) {
+    clear_rect(scene, framebuffer_height, palette::kDivider);
+    const auto [left, right] = comparison_halves(scene);
+    Camera half = camera;
+    half.set_viewport({static_cast<float>(left.width), static_cast<float>(left.height)});
+    clear_rect(left, framebuffer_height, palette::kBackground);
+    clear_rect(right, framebuffer_height, palette::kBackground);
+    draw_view(left_, half, left, framebuffer_height, display, session.selected(), -1);
+    draw_view(right_, half, right, framebuffer_height, display, session.selected(), -1);
+  } else {
+    draw_view(main_, camera, scene, framebuffer_height, display, session.selected(), hovered_hole);
+  }
+  glViewport(0, 0, framebuffer_width, framebuffer_height);
+}
+
+void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const PixelRect& rect,
+                         int framebuffer_height, const DisplayOptions& display, int selected,
+                         int hovered) {
+  glViewport(rect.x, framebuffer_height - rect.y - rect.height, rect.width, rect.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  const glm::mat4 view = camera.view();
+  const glm::mat4 projection = camera.projection();
+  const float bias = 0.004f * layer.radius;
+
+  // The surface is pushed back a little so that edges and dots drawn on it win the depth test.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 1.0f);
+  surface_program_.use();
+  surface_program_.set("u_view", view);
+  surface_program_.set("u_projection", projection);
+  surface_program_.set("u_flat", display.flat ? 1 : 0);
+  surface_program_.set("u_face_stages", 0);
+  const glm::vec3 stage_colors[4] = {rgb(palette::kSurface), rgb(palette::kTriangulated),
+                                     rgb(palette::kRefined), rgb(palette::kRefined)};
+  surface_program_.set("u_stage_colors", stage_colors, 4);
+  layer.surface.draw_surface(0);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+
+  solid_program_.use();
+  solid_program_.set("u_view", view);
+  solid_program_.set("u_projection", projection);
+  solid_program_.set("u_depth_bias", 0.0f);
+  if (display.wireframe) {
+    solid_program_.set("u_round", 0);
+    solid_program_.set("u_color", rgba(palette::kWireframe));
+    layer.surface.draw_edges();
+  }
+  if (display.patch_vertices) {
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    solid_program_.set("u_round", 1);
+    solid_program_.set("u_point_size", 6.0f);
+    solid_program_.set("u_depth_bias", bias);
+    solid_program_.set("u_color", rgba(palette::kPatchVertex));
+    layer.surface.draw_patch_vertices();
+    glDisable(GL_PROGRAM_POINT_SIZE);
+  }
+
+  line_program_.use();
+  line_program_.set("u_view", view);
+  line_program_.set("u_projection", projection);
+  line_program_.set("u_viewport", glm::vec2(rect.width, rect.height));
+  line_program_.set("u_width", 5.0f);
+  line_program_.set("u_depth_bias", bias);
+  line_program_.set("u_selected", selected);
+  line_program_.set("u_hovered", hovered);
+  line_program_.set("u_color", rgba(palette::kBoundary));
+  line_program_.set("u_selected_color", rgba(palette::kSelectedBoundary));
+  line_program_.set("u_hovered_color", rgba(palette::kHoveredBoundary));
+  layer.boundary.draw();
+  glDisable(GL_DEPTH_TEST);
+}
+
+std::vector<std::uint8_t> Renderer::read_pixels(int width, int height) const {
+  std::vector<std::uint8_t> bottom_up(static_cast<std::size_t>(width) * height * 3);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottom_up.data());
+  std::vector<std::uint8_t> top_down(bottom_up.size());
+  const std::size_t row = static_cast<std::size_t>(width) * 3;
+  for (int y = 0; y < height; ++y) {
+    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(y * row), row,
+                top_down.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * row));
+  }
+  return top_down;
+}
+
+}  // namespace holefill::viewer

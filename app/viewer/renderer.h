@@ -1,0 +1,59 @@
+// All OpenGL drawing (3.3 core): the shaded surface with faces coloured by the stage that made
+// them, the wireframe overlay, patch vertices as dots, every unfilled hole's boundary as a thick
+// line (selected and hovered holes in their own colours), and the comparison's two viewports.
+// The renderer only reads the session; it uploads a mesh again only when its version changes.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "camera.h"
+#include "display.h"
+#include "gl_program.h"
+#include "mesh_buffers.h"
+#include "session.h"
+
+namespace holefill::viewer {
+
+// A rectangle of the window in framebuffer pixels, origin top-left.
+struct PixelRect {
+  int x = 0, y = 0, width = 1, height = 1;
+};
+
+class Renderer {
+ public:
+  Renderer();
+
+  // Draws the session's scene into `scene` of a `framebuffer_height`-tall framebuffer: one view,
+  // or the comparison's two side by side sharing `camera`'s pose.
+  void render(Session& session, const Camera& camera, const PixelRect& scene, int framebuffer_width,
+              int framebuffer_height, const DisplayOptions& display, int hovered_hole);
+
+  // The two halves the comparison view splits `scene` into.
+  static std::pair<PixelRect, PixelRect> comparison_halves(const PixelRect& scene);
+
+  // The framebuffer as RGB rows, top row first.
+  std::vector<std::uint8_t> read_pixels(int width, int height) const;
+
+ private:
+  struct MeshLayer {
+    MeshBuffers surface;
+    BoundaryBuffers boundary;
+    std::uint64_t version = ~std::uint64_t{0};
+    float radius = 1.0f;
+  };
+
+  void sync(Session& session);
+  void draw_view(const MeshLayer& layer, const Camera& camera, const PixelRect& rect,
+                 int framebuffer_height, const DisplayOptions& display, int selected, int hovered);
+
+  GlProgram surface_program_;
+  GlProgram solid_program_;
+  GlProgram line_program_;
+  MeshLayer main_;
+  MeshLayer left_;
+  MeshLayer right_;
+};
+
+}  // namespace holefill::viewer

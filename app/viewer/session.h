@@ -1,0 +1,131 @@
+// What the user is working on: the open mesh, its holes (found once, at load), each hole's
+// progress through the stages (holefill::advance), the fill options, undo/redo, and the
+// comparison of two weights on the selected hole. No GL and no window: tests drive it directly.
+//
+// The session's state is a log of stage steps, each "advance hole h with these options", applied
+// in order to the mesh as loaded. A step extends the log and runs on the current mesh; undo,
+// redo, reset and a parameter change rebuild the mesh by replaying the log from the loaded mesh.
+// Replay runs the same operations in the same order, so undo restores the mesh exactly, and the
+// history costs a few bytes per step instead of a mesh copy.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "comparison.h"
+#include "holefill/fill.h"
+
+namespace holefill::viewer {
+
+struct FillStep {
+  int hole_id = -1;
+  FillOptions options;
+};
+
+struct Notice {
+  std::string text;
+  bool error = false;
+};
+
+class Session {
+ public:
+  // Opens a mesh file. On failure the current mesh stays and notice() says why.
+  bool open(const std::filesystem::path& path);
+  // Starts over on `mesh` (named `name` in the UI).
+  void load(Mesh mesh, std::string name);
+  // Writes the current mesh (OBJ, OFF or PLY by extension); notice() reports either way.
+  bool save(const std::filesystem::path& path);
+
+  const std::string& name() const { return name_; }
+  const Mesh& mesh() const { return mesh_; }
+  const std::vector<Hole>& holes() const { return holes_; }
+  const HoleFill& fill(int hole_id) const { return fills_.at(hole_id); }
+  // Incremented whenever mesh() changes, so a renderer knows when to upload it again.
+  std::uint64_t mesh_version() const { return mesh_version_; }
+  const Notice& notice() const { return notice_; }
+  void clear_notice() { notice_ = {}; }
+
+  // The selected hole, -1 for none.
+  int selected() const { return selected_; }
+  void select(int hole_id);
+
+  // The options the next step uses. Setting them while the selected hole has been stepped
+  // re-runs that hole's steps with the new options, so its statistics stay live.
+  const FillOptions& options() const { return options_; }
+  void set_options(const FillOptions& options);
+
+  // The stage the selected hole's next step would produce; nothing when it cannot step
+  // (no selection, all stages done, or a stage failed).
+  std::optional<Stage> next_stage() const;
+  bool can_step(Stage stage) const { return next_stage() == stage; }
+  // Runs `stage` on the selected hole when it is the next one.
+  bool step(Stage stage);
+  // Runs the selected hole's remaining stages.
+  bool fill_selected();
+  // Runs every hole's remaining stages with the current options.
+  bool fill_all();
+  // Takes the selected hole's patch out again.
+  bool reset_selected();
+
+  bool can_undo() const { return !undo_.empty(); }
+  bool can_redo() const { return !redo_.empty(); }
+  bool undo();
+  bool redo();
+  static constexpr std::size_t kHistoryLimit = 200;
+
+  const std::vector<FillStep>& log() const { return log_; }
+
+  // Valence histogram of every vertex of mesh(), cached per mesh version.
+  const std::map<int, std::size_t>& mesh_valences();
+
+  // The comparison of liepa and maxmin on the selected hole (filled from the mesh without that
+  // hole's own patch), recomputed when the selection, the options or the mesh change.
+  void set_compare(bool on);
+  bool compare() const { return compare_; }
+  void set_compare_triangulation_only(bool on);
+  bool compare_triangulation_only() const { return compare_triangulation_only_; }
+  // Nothing when comparison is off or no hole is selected.
+  const Comparison* comparison();
+  std::uint64_t comparison_version() const { return comparison_version_; }
+
+ private:
+  struct Snapshot {
+    std::vector<FillStep> log;
+    int selected = -1;
+  };
+
+  void remember();
+  void restore(Snapshot snapshot);
+  void replay();
+  bool run_step(int hole_id);
+  bool has_steps(int hole_id) const;
+  void changed();
+
+  std::string name_;
+  Mesh loaded_;
+  Mesh mesh_;
+  std::vector<Hole> holes_;
+  std::vector<HoleFill> fills_;
+  std::vector<FillStep> log_;
+  std::vector<Snapshot> undo_;
+  std::vector<Snapshot> redo_;
+  bool last_change_was_options_ = false;
+  int selected_ = -1;
+  FillOptions options_;
+  Notice notice_;
+  std::uint64_t mesh_version_ = 0;
+  std::uint64_t valences_version_ = ~std::uint64_t{0};
+  std::map<int, std::size_t> valences_;
+
+  bool compare_ = false;
+  bool compare_triangulation_only_ = false;
+  bool comparison_stale_ = true;
+  std::optional<Comparison> comparison_;
+  std::uint64_t comparison_version_ = 0;
+};
+
+}  // namespace holefill::viewer
