@@ -1,6 +1,7 @@
 #include "holefill/triangulate.h"
 
 #include <cmath>
+#include <cstdint>
 #include <map>
 
 namespace holefill {
@@ -17,80 +18,93 @@ Point unit_normal(const Point& a, const Point& b, const Point& c) {
 
 bool is_zero(const Point& p) { return p[0] == 0.0 && p[1] == 0.0 && p[2] == 0.0; }
 
-// Flat storage for the (i, k) cells of the dynamic program.
+// Triangular storage for the cells (i, k), 0 <= i < k < n: row i holds k = i+1 ... n-1.
 template <class T>
-class CellTable {
+class TriangularTable {
  public:
-  explicit CellTable(int n) : n_(n), cells_(static_cast<std::size_t>(n) * n) {}
-  T& operator()(int i, int k) { return cells_[static_cast<std::size_t>(i) * n_ + k]; }
-  const T& operator()(int i, int k) const { return cells_[static_cast<std::size_t>(i) * n_ + k]; }
+  explicit TriangularTable(int n)
+      : n_(n), cells_(static_cast<std::size_t>(n) * static_cast<std::size_t>(n - 1) / 2) {}
+  T& operator()(int i, int k) { return cells_[index(i, k)]; }
+  const T& operator()(int i, int k) const { return cells_[index(i, k)]; }
 
  private:
+  std::size_t index(int i, int k) const {
+    const std::size_t row = static_cast<std::size_t>(i);
+    return row * static_cast<std::size_t>(n_) - row * (row + 1) / 2 +
+           static_cast<std::size_t>(k - i - 1);
+  }
   int n_;
   std::vector<T> cells_;
 };
 
+// The dynamic program. Candidates are skipped as soon as they cannot beat the cell's best: adding
+// a triangle only makes every component of a weight worse (more degenerate triangles, a smaller
+// smallest angle, a larger dihedral angle, a larger area), so a partial value that does not beat
+// the best never will. Skipped candidates are exactly those the plain loop would reject, so the
+// result is the same triangulation; `prune` = false runs the plain loop (for tests).
 template <class Weight>
-std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weight& weight) {
+std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weight& weight,
+                                          bool prune) {
   using Value = typename Weight::Value;
-  struct Cell {
-    Value value = Weight::identity();
-    int apex = -1;  // O(i,k); -1 for an edge of the polygon or an infeasible cell
-    bool feasible = false;
-    Point apex_normal{0.0, 0.0, 0.0};  // normal of triangle (i, O(i,k), k)
-  };
   const auto& p = polygon.points;
   const int n = static_cast<int>(p.size());
-  CellTable<Cell> cells(n);
-  CellTable<char> forbidden(n);
+  TriangularTable<Value> values(n);
+  constexpr std::uint16_t kNone = 0xFFFF;  // apex of an infeasible cell
+  TriangularTable<std::uint16_t> apex(n);  // O(i,k); polygon edges get 0 (never read)
+  TriangularTable<char> forbidden(n);
   for (const auto& [i, k] : polygon.forbidden_chords) {
     forbidden(std::min(i, k), std::max(i, k)) = 1;
   }
-  for (int i = 0; i + 1 < n; ++i) cells(i, i + 1).feasible = true;
+  for (int i = 0; i + 1 < n; ++i) {
+    values(i, i + 1) = Weight::identity();
+    apex(i, i + 1) = 0;
+  }
 
-  // Dihedral angle across edge (a, b) of a candidate, against what lies on its other side.
-  auto dihedral_against = [&](const Point& normal, int a, int b) {
-    if (b == a + 1) {
-      const Point& outside = polygon.outside_normals[a];
-      return is_zero(outside) ? 0.0 : angle_between_normals(normal, outside);
-    }
-    return angle_between_normals(normal, cells(a, b).apex_normal);
+  // Normal of the triangle chosen for sub-polygon (a, b), or of the mesh face across (a, b).
+  auto neighbour_normal = [&](int a, int b) -> Point {
+    if (b == a + 1) return polygon.outside_normals[a];
+    return unit_normal(p[a], p[apex(a, b)], p[b]);
+  };
+  auto dihedral = [](const Point& normal, const Point& other) {
+    return is_zero(other) ? 0.0 : angle_between_normals(normal, other);
   };
 
-  for (int d = 2; d < n; ++d) {
-    for (int i = 0; i + d < n; ++i) {
-      const int k = i + d;
+  // Rows from the bottom up: cell (i, k) needs (i, m) from its own row and (m, k) from below.
+  for (int i = n - 3; i >= 0; --i) {
+    for (int k = i + 2; k < n; ++k) {
       const bool closing_edge = (i == 0 && k == n - 1);
-      Cell& cell = cells(i, k);
+      std::uint16_t& best_apex = apex(i, k);
+      best_apex = kNone;
       if (forbidden(i, k) && !closing_edge) continue;
+      Value& best = values(i, k);
       for (int m = i + 1; m < k; ++m) {
-        const Cell& left = cells(i, m);
-        const Cell& right = cells(m, k);
-        if (!left.feasible || !right.feasible) continue;
-        TriangleMeasures measures = measure_triangle(p[i], p[m], p[k]);
-        Point normal(0.0, 0.0, 0.0);
+        if (apex(i, m) == kNone || apex(m, k) == kNone) continue;
+        const bool have_best = best_apex != kNone;
+        Value value = Weight::combine(values(i, m), values(m, k));
+        if (prune && have_best && !weight.less(value, best)) continue;
+        TriangleMeasures measures = measure_triangle(p[i], p[m], p[k], Weight::kUsesMinAngle);
         if constexpr (Weight::kUsesDihedral) {
-          normal = unit_normal(p[i], p[m], p[k]);
-          double dihedral =
-              std::max(dihedral_against(normal, i, m), dihedral_against(normal, m, k));
-          if (closing_edge && !is_zero(polygon.outside_normals[n - 1])) {
-            dihedral =
-                std::max(dihedral, angle_between_normals(normal, polygon.outside_normals[n - 1]));
+          if (prune && have_best &&
+              !weight.less(Weight::combine(value, Weight::of(measures)), best)) {
+            continue;
           }
-          measures.max_dihedral = dihedral;
+          const Point normal = unit_normal(p[i], p[m], p[k]);
+          double worst = std::max(dihedral(normal, neighbour_normal(i, m)),
+                                  dihedral(normal, neighbour_normal(m, k)));
+          if (closing_edge) {
+            worst = std::max(worst, dihedral(normal, polygon.outside_normals[n - 1]));
+          }
+          measures.max_dihedral = worst;
         }
-        const Value value =
-            Weight::combine(Weight::combine(left.value, right.value), Weight::of(measures));
-        if (!cell.feasible || weight.less(value, cell.value)) {
-          cell.value = value;
-          cell.apex = m;
-          cell.feasible = true;
-          cell.apex_normal = normal;
+        value = Weight::combine(value, Weight::of(measures));
+        if (!have_best || weight.less(value, best)) {
+          best = value;
+          best_apex = static_cast<std::uint16_t>(m);
         }
       }
     }
   }
-  if (!cells(0, n - 1).feasible) return std::nullopt;
+  if (apex(0, n - 1) == kNone) return std::nullopt;
 
   PolygonTriangulation result;
   std::vector<std::pair<int, int>> pending{{0, n - 1}};
@@ -98,7 +112,7 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
     const auto [i, k] = pending.back();
     pending.pop_back();
     if (k - i < 2) continue;
-    const int m = cells(i, k).apex;
+    const int m = apex(i, k);
     result.triangles.push_back({i, m, k});
     pending.emplace_back(i, m);
     pending.emplace_back(m, k);
@@ -131,7 +145,8 @@ bool parse_weight(const std::string& text, WeightKind& kind) {
   return false;
 }
 
-TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c) {
+TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c,
+                                  bool with_min_angle) {
   TriangleMeasures t;
   const double ab = (b - a).sqrnorm(), bc = (c - b).sqrnorm(), ca = (a - c).sqrnorm();
   const double twice_area = OpenMesh::cross(b - a, c - a).norm();
@@ -139,7 +154,7 @@ TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c
   const double longest = std::max({ab, bc, ca});
   // sin(smallest angle) >= twice_area / longest^2 (up to a factor), a scale-free test.
   t.degenerate = !(longest > 0.0) || twice_area <= kDegenerateSine * longest;
-  if (t.degenerate) return t;
+  if (t.degenerate || !with_min_angle) return t;
   // The smallest angle lies opposite the shortest edge.
   if (bc <= ab && bc <= ca) {
     t.min_angle = std::atan2(twice_area, OpenMesh::dot(b - a, c - a));
@@ -190,14 +205,14 @@ TriangulationQuality evaluate_triangulation(const HolePolygon& polygon,
 
 std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polygon,
                                                         const TriangulateOptions& options) {
-  if (polygon.points.size() < 3) return std::nullopt;
+  if (polygon.points.size() < 3 || polygon.points.size() >= kMaxPolygonSize) return std::nullopt;
   switch (options.weight) {
     case WeightKind::MaxMin:
-      return solve(polygon, MaxMinWeight{options.angle_tolerance});
+      return solve(polygon, MaxMinWeight{options.angle_tolerance}, options.prune);
     case WeightKind::Liepa:
-      return solve(polygon, LiepaWeight{options.angle_tolerance});
+      return solve(polygon, LiepaWeight{options.angle_tolerance}, options.prune);
     case WeightKind::Area:
-      return solve(polygon, AreaWeight{});
+      return solve(polygon, AreaWeight{}, options.prune);
   }
   return std::nullopt;
 }

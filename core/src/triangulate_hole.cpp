@@ -41,6 +41,11 @@ TriangulateHoleResult triangulate_hole(Mesh& mesh, const Hole& hole,
     result.failure = "a boundary loop of fewer than 3 edges cannot be triangulated";
     return result;
   }
+  if (hole.size() >= kMaxPolygonSize) {
+    result.failure = "the hole has " + std::to_string(hole.size()) + " boundary edges; at most " +
+                     std::to_string(kMaxPolygonSize - 1) + " are supported";
+    return result;
+  }
   const HolePolygon polygon = hole_polygon(mesh, hole);
   const auto triangulation = triangulate_polygon(polygon, options);
   if (!triangulation) {

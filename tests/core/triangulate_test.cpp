@@ -175,6 +175,23 @@ TEST(Triangulate, MaxMinOnPlanarConvexPolygonMatchesDelaunayMinAngle) {
   }
 }
 
+TEST(Triangulate, PrunedSearchGivesTheSameTriangulationAsThePlainLoop) {
+  std::mt19937 rng(23);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int n = 3 + trial * 3;
+    HolePolygon polygon = random_hole(n, rng);
+    if (trial % 2) polygon.forbidden_chords = random_forbidden_chords(n, rng);
+    for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}) {
+      TriangulateOptions fast{weight}, plain{weight};
+      plain.prune = false;
+      const auto a = triangulate_polygon(polygon, fast), b = triangulate_polygon(polygon, plain);
+      ASSERT_EQ(a.has_value(), b.has_value());
+      if (!a) continue;
+      EXPECT_EQ(a->triangles, b->triangles) << to_string(weight) << ", n = " << n;
+    }
+  }
+}
+
 TEST(Triangulate, NeverUsesAForbiddenChord) {
   std::mt19937 rng(13);
   for (int trial = 0; trial < 40; ++trial) {

@@ -32,7 +32,13 @@ struct HolePolygon {
 struct TriangulateOptions {
   WeightKind weight = WeightKind::MaxMin;
   double angle_tolerance = kDefaultAngleTolerance;
+  // Skip candidates that cannot beat a cell's best (same result, much faster); false runs the
+  // plain O(n^3) loop, kept as the reference the fast path is tested against.
+  bool prune = true;
 };
+
+// The dynamic program stores apexes in 16 bits: holes must have fewer boundary edges than this.
+inline constexpr std::size_t kMaxPolygonSize = 0xFFFF;
 
 // The weight's components for a whole triangulation, whatever the weight: the quantities the
 // paper's weights order, computed over all of the triangulation's triangles.
@@ -50,12 +56,14 @@ struct PolygonTriangulation {
 };
 
 // The optimal triangulation under options.weight, or nothing when the forbidden chords leave no
-// valid triangulation. The polygon needs at least 3 points.
+// valid triangulation. The polygon needs at least 3 and fewer than kMaxPolygonSize points.
 std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polygon,
                                                         const TriangulateOptions& options);
 
-// The measures of triangle (a, b, c) that the weights use, except its dihedral angle.
-TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c);
+// The measures of triangle (a, b, c) that the weights use, except its dihedral angle (and its
+// smallest angle, left 0, when with_min_angle is false: only maxmin needs the atan2).
+TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c,
+                                  bool with_min_angle = true);
 
 // Angle between two unit normals, radians; pi when either is zero (unknown orientation).
 double angle_between_normals(const Point& n1, const Point& n2);

@@ -35,6 +35,7 @@ inline constexpr double kDefaultAngleTolerance = 1e-9;
 
 struct AreaWeight {
   static constexpr bool kUsesDihedral = false;
+  static constexpr bool kUsesMinAngle = false;
   struct Value {
     int degenerate = 0;
     double area = 0.0;
@@ -52,6 +53,7 @@ struct AreaWeight {
 
 struct LiepaWeight {
   static constexpr bool kUsesDihedral = true;
+  static constexpr bool kUsesMinAngle = false;
   double angle_tolerance = kDefaultAngleTolerance;
   struct Value {
     int degenerate = 0;
@@ -76,6 +78,7 @@ struct LiepaWeight {
 
 struct MaxMinWeight {
   static constexpr bool kUsesDihedral = true;
+  static constexpr bool kUsesMinAngle = true;
   double angle_tolerance = kDefaultAngleTolerance;
   struct Value {
     int degenerate = 0;
