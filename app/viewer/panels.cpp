@@ -30,7 +30,7 @@ void histogram(const char* id, const std::map<int, std::size_t>& valences, float
   char label[64];
   std::snprintf(label, sizeof label, "valence %d .. %d", first, last);
   ImGui::PlotHistogram(id, counts.data(), static_cast<int>(counts.size()), 0, label, 0.0f,
-                       most * 1.1f, ImVec2(-1.0f, height));
+                       most * 1.1f, ImVec2(ImGui::GetContentRegionAvail().x, height));
 }
 
 void patch_statistics(const HoleFill& fill) {

@@ -1,0 +1,213 @@
+#include "session.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace holefill::viewer {
+namespace {
+
+const std::filesystem::path kBunny = std::filesystem::path(HOLEFILL_TEST_ASSETS) / "bunny.obj";
+
+// Same vertex positions (bit for bit) and the same faces, in the same order.
+bool same_mesh(const Mesh& a, const Mesh& b) {
+  if (a.n_vertices() != b.n_vertices() || a.n_faces() != b.n_faces()) return false;
+  for (const auto v : a.vertices()) {
+    if (a.point(v) != b.point(VertexHandle(v.idx()))) return false;
+  }
+  for (const auto f : a.faces()) {
+    auto fa = a.cfv_iter(f);
+    auto fb = b.cfv_iter(FaceHandle(f.idx()));
+    for (int i = 0; i < 3; ++i, ++fa, ++fb) {
+      if (fa->idx() != fb->idx()) return false;
+    }
+  }
+  return true;
+}
+
+Session bunny_session() {
+  Session session;
+  EXPECT_TRUE(session.open(kBunny)) << session.notice().text;
+  return session;
+}
+
+TEST(Session, OpensTheBunnyWithItsThreeHolesLargestFirst) {
+  Session session = bunny_session();
+  ASSERT_EQ(session.holes().size(), 3u);
+  EXPECT_EQ(session.holes()[0].size(), 99u);
+  EXPECT_EQ(session.selected(), -1);
+  EXPECT_FALSE(session.next_stage());
+}
+
+TEST(Session, StagesRunInOrderOnTheSelectedHole) {
+  Session session = bunny_session();
+  session.select(2);
+  EXPECT_FALSE(session.can_step(Stage::Refined));
+  EXPECT_FALSE(session.step(Stage::Smoothed));
+  EXPECT_TRUE(session.can_step(Stage::Triangulated));
+  ASSERT_TRUE(session.step(Stage::Triangulated));
+  EXPECT_EQ(session.fill(2).stage(), Stage::Triangulated);
+  EXPECT_FALSE(session.step(Stage::Triangulated));
+  ASSERT_TRUE(session.step(Stage::Refined));
+  ASSERT_TRUE(session.step(Stage::Smoothed));
+  EXPECT_EQ(session.fill(2).stage(), Stage::Smoothed);
+  EXPECT_FALSE(session.next_stage());
+  EXPECT_EQ(session.fill(0).stage(), Stage::Original);
+  EXPECT_EQ(session.holes().size(), 3u);  // holes keep their ids after a fill
+}
+
+TEST(Session, UndoAndRedoRestoreTheMeshExactly) {
+  Session session = bunny_session();
+  const Mesh loaded = session.mesh();
+  session.select(0);
+  ASSERT_TRUE(session.step(Stage::Triangulated));
+  const Mesh triangulated = session.mesh();
+  ASSERT_TRUE(session.step(Stage::Refined));
+  ASSERT_TRUE(session.step(Stage::Smoothed));
+  const Mesh smoothed = session.mesh();
+  session.select(1);
+  ASSERT_TRUE(session.fill_selected());
+  const Mesh both = session.mesh();
+
+  ASSERT_TRUE(session.undo());
+  EXPECT_TRUE(same_mesh(session.mesh(), smoothed));
+  EXPECT_EQ(session.fill(1).stage(), Stage::Original);
+  ASSERT_TRUE(session.undo());
+  ASSERT_TRUE(session.undo());
+  EXPECT_TRUE(same_mesh(session.mesh(), triangulated));
+  EXPECT_EQ(session.fill(0).stage(), Stage::Triangulated);
+  ASSERT_TRUE(session.undo());
+  EXPECT_TRUE(same_mesh(session.mesh(), loaded));
+  EXPECT_FALSE(session.undo());
+
+  for (int i = 0; i < 4; ++i) ASSERT_TRUE(session.redo());
+  EXPECT_TRUE(same_mesh(session.mesh(), both));
+  EXPECT_FALSE(session.redo());
+  EXPECT_EQ(session.selected(), 1);
+}
+
+TEST(Session, ANewStepAfterUndoDropsTheRedoHistory) {
+  Session session = bunny_session();
+  session.select(2);
+  ASSERT_TRUE(session.step(Stage::Triangulated));
+  ASSERT_TRUE(session.undo());
+  EXPECT_TRUE(session.can_redo());
+  ASSERT_TRUE(session.fill_selected());
+  EXPECT_FALSE(session.can_redo());
+}
+
+TEST(Session, FailedOpenKeepsThePreviousMeshAndSaysWhy) {
+  Session session = bunny_session();
+  session.select(1);
+  ASSERT_TRUE(session.step(Stage::Triangulated));
+  const Mesh before = session.mesh();
+  EXPECT_FALSE(session.open("/nonexistent/holefill/missing.obj"));
+  EXPECT_TRUE(session.notice().error);
+  EXPECT_NE(session.notice().text.find("missing.obj"), std::string::npos);
+  EXPECT_TRUE(same_mesh(session.mesh(), before));
+  EXPECT_EQ(session.selected(), 1);
+  EXPECT_EQ(session.fill(1).stage(), Stage::Triangulated);
+  EXPECT_TRUE(session.can_undo());
+}
+
+TEST(Session, ResetHoleTakesItsPatchOutAndKeepsOthers) {
+  Session session = bunny_session();
+  const Mesh loaded = session.mesh();
+  session.select(2);
+  ASSERT_TRUE(session.fill_selected());
+  const Mesh only_two = session.mesh();
+  session.select(0);
+  ASSERT_TRUE(session.fill_selected());
+  ASSERT_TRUE(session.reset_selected());
+  EXPECT_EQ(session.fill(0).stage(), Stage::Original);
+  EXPECT_TRUE(same_mesh(session.mesh(), only_two));
+  session.select(2);
+  ASSERT_TRUE(session.reset_selected());
+  EXPECT_TRUE(same_mesh(session.mesh(), loaded));
+}
+
+TEST(Session, ChangingOptionsRerunsTheSelectedHolesStages) {
+  Session session = bunny_session();
+  session.select(0);
+  ASSERT_TRUE(session.step(Stage::Triangulated));
+  ASSERT_TRUE(session.step(Stage::Refined));
+  const std::size_t dense = session.fill(0).stats.new_vertices;
+  FillOptions options = session.options();
+  options.refine.tau = 1.0;
+  session.set_options(options);
+  EXPECT_EQ(session.fill(0).stage(), Stage::Refined);
+  EXPECT_LT(session.fill(0).stats.new_vertices, dense);
+  // One undo takes back the whole parameter change.
+  options.refine.tau = 1.2;
+  session.set_options(options);
+  ASSERT_TRUE(session.undo());
+  EXPECT_EQ(session.fill(0).stats.new_vertices, dense);
+  EXPECT_NEAR(session.options().refine.tau, std::sqrt(2.0), 1e-12);
+}
+
+TEST(Session, FillAllFillsEveryHoleAndUndoesAsOneAction) {
+  Session session = bunny_session();
+  ASSERT_TRUE(session.fill_all());
+  for (const auto& hole : session.holes()) {
+    EXPECT_EQ(session.fill(hole.id).stage(), Stage::Smoothed);
+  }
+  ASSERT_TRUE(session.undo());
+  for (const auto& hole : session.holes()) {
+    EXPECT_EQ(session.fill(hole.id).stage(), Stage::Original);
+  }
+}
+
+TEST(Session, MeshValencesCountEveryVertex) {
+  Session session = bunny_session();
+  std::size_t total = 0;
+  for (const auto& [valence, count] : session.mesh_valences()) total += count;
+  EXPECT_EQ(total, session.mesh().n_vertices());
+}
+
+TEST(Session, ComparisonFillsTheSelectedHoleWithEachWeight) {
+  Session session = bunny_session();
+  EXPECT_EQ(session.comparison(), nullptr);
+  session.set_compare(true);
+  EXPECT_EQ(session.comparison(), nullptr);  // nothing selected
+  session.select(0);
+  session.set_compare_triangulation_only(true);
+  const Comparison* comparison = session.comparison();
+  ASSERT_NE(comparison, nullptr);
+  EXPECT_EQ(comparison->left.weight, WeightKind::Liepa);
+  EXPECT_EQ(comparison->right.weight, WeightKind::MaxMin);
+  EXPECT_EQ(comparison->left.fill.stage(), Stage::Triangulated);
+  EXPECT_EQ(comparison->right.fill.stage(), Stage::Triangulated);
+  // maxmin maximises the smallest angle, so it cannot do worse than liepa there, and on the
+  // bunny's large hole the two triangulations differ.
+  EXPECT_GE(comparison->right.fill.stats.min_angle_deg, comparison->left.fill.stats.min_angle_deg);
+  EXPECT_NE(comparison->right.fill.stats.max_dihedral_deg,
+            comparison->left.fill.stats.max_dihedral_deg);
+  // The session's own mesh is untouched by the comparison.
+  EXPECT_EQ(session.fill(0).stage(), Stage::Original);
+}
+
+TEST(Session, ComparisonStartsFromTheHoleBeforeItsOwnSteps) {
+  Session session = bunny_session();
+  session.select(0);
+  ASSERT_TRUE(session.fill_selected());
+  session.set_compare(true);
+  const Comparison* comparison = session.comparison();
+  ASSERT_NE(comparison, nullptr);
+  EXPECT_EQ(comparison->right.fill.stage(), Stage::Smoothed);
+  EXPECT_FALSE(comparison->right.fill.failed());
+  EXPECT_EQ(comparison->right.fill.stats.new_faces, session.fill(0).stats.new_faces);
+}
+
+TEST(Session, SavesTheFilledMesh) {
+  Session session = bunny_session();
+  ASSERT_TRUE(session.fill_all());
+  const auto path = std::filesystem::temp_directory_path() / "holefill_viewer_session_test.obj";
+  ASSERT_TRUE(session.save(path)) << session.notice().text;
+  Session reopened;
+  ASSERT_TRUE(reopened.open(path));
+  EXPECT_TRUE(reopened.holes().empty());
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace holefill::viewer
