@@ -1,0 +1,330 @@
+// holefill-quality: how close and how well-shaped are the patches? Cuts holes of chosen sizes
+// out of closed meshes (generated shapes and the closed bunny), fills them with every
+// combination of triangulation weight and smoothing (and with CGAL's
+// triangulate_refine_and_fair_hole when built with CGAL), measures each patch against the
+// surface that was cut away, and prints one Markdown table. See README.md beside this file.
+//
+//   holefill-quality [--assets DIR] [--meshes a,b] [--weights a,b] [--smooth a,b]
+//                    [--cut R,R,...]... [--seed N] [--write DIR]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cut_holes.h"
+#include "holefill/errors.h"
+#include "holefill/fill.h"
+#include "holefill/holes.h"
+#include "holefill/io.h"
+#include "measure.h"
+#include "shapes.h"
+#ifdef HOLEFILL_QUALITY_WITH_CGAL
+#include "cgal_fill.h"
+#endif
+
+namespace holefill::quality {
+namespace {
+
+constexpr const char* kUsage = R"(usage: holefill-quality [options]
+
+  --assets DIR         where bunny_closed.obj is (default: the source tree's assets/)
+  --meshes a,b         sphere, ellipsoid, blob, torus, bunny (default: all)
+  --weights a,b        maxmin, liepa, area (default: maxmin)
+  --smooth a,b         umbrella, fair-cot-2, fair-uniform-2, fair-cot-3, fair-uniform-3,
+                       cgal, truth (default: all that are built)
+  --cut R,R,...        one cut with a hole of each radius, in mean edge lengths; repeatable
+                       (default: --cut 3,3,3 --cut 7)
+  --seed N             seed for the hole centres (default 1)
+  --write DIR          also write every filled mesh there as OBJ
+)";
+
+struct UsageError {
+  std::string message;
+};
+
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream stream(text);
+  for (std::string part; std::getline(stream, part, ',');) {
+    if (!part.empty()) parts.push_back(part);
+  }
+  return parts;
+}
+
+struct Shape {
+  std::string name;
+  std::function<Mesh()> make;
+};
+
+std::vector<Shape> shapes(const std::filesystem::path& assets) {
+  return {
+      {"sphere", [] { return make_icosphere(4); }},
+      {"ellipsoid",
+       [] {
+         return make_star_shape(
+             4, [](const Point&) { return 1.0; }, Point(1.6, 1.0, 0.6));
+       }},
+      {"blob",
+       [] {
+         return make_star_shape(
+             4,
+             [](const Point& p) {
+               return 1.0 + 0.2 * std::sin(3.0 * p[0]) * std::sin(3.0 * p[1] + 1.0) *
+                                std::cos(2.0 * p[2]);
+             },
+             Point(1.0, 1.0, 1.0));
+       }},
+      {"torus", [] { return make_torus(1.0, 0.4, 72, 28); }},
+      {"bunny", [assets] { return load_mesh(assets / "bunny_closed.obj"); }},
+  };
+}
+
+// How a cut mesh is filled: our pipeline with one weight and one smoothing, CGAL's, or the
+// truth itself (the removed faces, as a reference row).
+struct Method {
+  std::string weight;
+  std::string smoothing;
+  FillOptions options;
+};
+
+std::optional<FillOptions> smoothing_options(const std::string& name) {
+  FillOptions options;
+  if (name == "umbrella") return options;
+  if (name.rfind("fair-cot-", 0) == 0 || name.rfind("fair-uniform-", 0) == 0) {
+    options.smooth.method = SmoothMethod::Fair;
+    options.smooth.fair.cotangent_weights = name.rfind("fair-cot-", 0) == 0;
+    options.smooth.fair.order = name.back() - '0';
+    if (options.smooth.fair.order == 2 || options.smooth.fair.order == 3) return options;
+  }
+  return std::nullopt;
+}
+
+std::string format(double value, int decimals) {
+  if (std::isnan(value)) return "–";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+std::string hole_sizes(const std::vector<Hole>& holes) {
+  std::ostringstream text;
+  for (std::size_t i = 0; i < holes.size(); ++i) text << (i ? "/" : "") << holes[i].size();
+  return text.str();
+}
+
+void print_header() {
+  std::cout << "| mesh | holes (boundary edges) | weight | smoothing | new V / F "
+               "| mean dist % | max dist % | min∠ p5 ° | min∠ ° | valence 6 % | edge ratio "
+               "| boundary dihedral mean ° | boundary dihedral max ° | max dihedral ° | notes |\n"
+               "|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+}
+
+void print_row(const std::string& mesh, const std::string& holes, const std::string& weight,
+               const std::string& smoothing, const Quality& q, const std::string& notes) {
+  std::cout << "| " << mesh << " | " << holes << " | " << weight << " | " << smoothing << " | "
+            << q.new_vertices << " / " << q.faces << " | " << format(100.0 * q.mean_distance, 3)
+            << " | " << format(100.0 * q.max_distance, 3) << " | " << format(q.min_angle_p5, 1)
+            << " | " << format(q.min_angle, 1) << " | " << format(100.0 * q.valence6_share, 0)
+            << " | " << format(q.edge_length_ratio, 2) << " | "
+            << format(q.mean_boundary_dihedral, 1) << " | " << format(q.max_boundary_dihedral, 1)
+            << " | " << format(q.max_dihedral, 1) << " | " << notes << " |" << std::endl;
+}
+
+// The truth's own measures: the removed faces in the closed mesh, as if they were the patch.
+std::vector<FilledHole> truth_patches(const Mesh& closed, const CutMesh& cut,
+                                      const std::vector<Hole>& loops) {
+  std::vector<FilledHole> patches;
+  for (const auto& loop : loops) {
+    for (const auto& hole : cut.holes) {
+      bool owns = false;
+      for (const auto f : hole.removed_faces) {
+        for (const auto v : closed.fv_range(f)) owns = owns || v == loop.vertices[0];
+      }
+      if (!owns) continue;
+      patches.push_back({loop.vertices, hole.removed_faces, hole.inner_vertices});
+    }
+  }
+  return patches;
+}
+
+#ifdef HOLEFILL_QUALITY_WITH_CGAL
+// CGAL's filling of the same holes, read back into our mesh type.
+Mesh fill_with_cgal(const Mesh& cut, const std::vector<Hole>& loops,
+                    std::vector<FilledHole>& patches, std::size_t& unfaired) {
+  PlainMesh plain;
+  for (const auto v : cut.vertices()) {
+    const Point& p = cut.point(v);
+    plain.points.push_back({p[0], p[1], p[2]});
+  }
+  for (const auto f : cut.faces()) {
+    auto fv = cut.cfv_iter(f);
+    const int a = fv->idx(), b = (++fv)->idx(), c = (++fv)->idx();
+    plain.faces.push_back({a, b, c});
+  }
+  std::vector<std::array<int, 2>> hole_edges;
+  for (const auto& loop : loops) {
+    hole_edges.push_back({loop.vertices[0].idx(), loop.vertices[1].idx()});
+  }
+  const CgalFill filled = cgal_fill(plain, hole_edges);
+  Mesh mesh;
+  for (const auto& p : filled.mesh.points) mesh.add_vertex(Point(p[0], p[1], p[2]));
+  for (const auto& f : filled.mesh.faces) {
+    mesh.add_face(VertexHandle(f[0]), VertexHandle(f[1]), VertexHandle(f[2]));
+  }
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    FilledHole patch{loops[i].vertices, {}, {}};
+    for (const int f : filled.patches[i].faces) patch.faces.emplace_back(f);
+    for (const int v : filled.patches[i].new_vertices) patch.new_vertices.emplace_back(v);
+    unfaired += filled.patches[i].faired ? 0 : 1;
+    patches.push_back(std::move(patch));
+  }
+  return mesh;
+}
+#endif
+
+int run(int argc, char** argv) {
+  std::filesystem::path assets = HOLEFILL_QUALITY_ASSETS_DIR;
+  std::vector<std::string> mesh_names, weight_names{"maxmin"}, smoothing_names;
+  std::vector<std::vector<double>> cuts;
+  unsigned seed = 1;
+  std::optional<std::filesystem::path> write_dir;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw UsageError{arg + " needs a value"};
+      return argv[++i];
+    };
+    if (arg == "--assets") {
+      assets = value();
+    } else if (arg == "--meshes") {
+      mesh_names = split(value());
+    } else if (arg == "--weights") {
+      weight_names = split(value());
+    } else if (arg == "--smooth") {
+      smoothing_names = split(value());
+    } else if (arg == "--cut") {
+      std::vector<double> radii;
+      for (const auto& r : split(value())) radii.push_back(std::stod(r));
+      cuts.push_back(radii);
+    } else if (arg == "--seed") {
+      seed = static_cast<unsigned>(std::stoul(value()));
+    } else if (arg == "--write") {
+      write_dir = value();
+    } else if (arg == "-h" || arg == "--help") {
+      std::cout << kUsage;
+      return 0;
+    } else {
+      throw UsageError{"unknown argument '" + arg + "'"};
+    }
+  }
+  if (cuts.empty()) cuts = {{3, 3, 3}, {7}};
+  if (smoothing_names.empty()) {
+    smoothing_names = {"umbrella", "fair-cot-2", "fair-uniform-2", "fair-cot-3", "fair-uniform-3"};
+#ifdef HOLEFILL_QUALITY_WITH_CGAL
+    smoothing_names.push_back("cgal");
+#endif
+    smoothing_names.push_back("truth");
+  }
+  std::vector<Method> methods;
+  for (const auto& smoothing : smoothing_names) {
+    if (smoothing == "cgal" || smoothing == "truth") {
+#ifndef HOLEFILL_QUALITY_WITH_CGAL
+      if (smoothing == "cgal") throw UsageError{"this build has no CGAL"};
+#endif
+      continue;
+    }
+    auto options = smoothing_options(smoothing);
+    if (!options) throw UsageError{"unknown smoothing '" + smoothing + "'"};
+    for (const auto& weight : weight_names) {
+      if (!parse_weight(weight, options->triangulate.weight)) {
+        throw UsageError{"unknown weight '" + weight + "'"};
+      }
+      methods.push_back({weight, smoothing, *options});
+    }
+  }
+  auto wanted = [&](const std::string& smoothing) {
+    return std::find(smoothing_names.begin(), smoothing_names.end(), smoothing) !=
+           smoothing_names.end();
+  };
+  if (write_dir) std::filesystem::create_directories(*write_dir);
+
+  print_header();
+  for (const auto& shape : shapes(assets)) {
+    if (!mesh_names.empty() &&
+        std::find(mesh_names.begin(), mesh_names.end(), shape.name) == mesh_names.end()) {
+      continue;
+    }
+    const Mesh closed = shape.make();
+    const Truth truth(closed);
+    for (const auto& radii : cuts) {
+      std::string problem;
+      const auto cut = cut_holes(closed, radii, seed, &problem);
+      if (!cut) {
+        std::cerr << "holefill-quality: " << shape.name << ": " << problem << "\n";
+        continue;
+      }
+      const auto loops = find_holes(cut->mesh);
+      const std::string sizes = hole_sizes(loops);
+      auto write = [&](const Mesh& mesh, const std::string& label) {
+        if (!write_dir) return;
+        std::string name = shape.name + "-" + sizes + "-" + label + ".obj";
+        std::replace(name.begin(), name.end(), '/', '_');
+        save_mesh(mesh, *write_dir / name);
+      };
+      for (const auto& method : methods) {
+        Mesh mesh = cut->mesh;
+        const auto fills = fill_holes(mesh, loops, method.options);
+        std::vector<FilledHole> patches;
+        std::size_t failed = 0, fell_back = 0;
+        for (const auto& fill : fills) {
+          failed += fill.failed();
+          fell_back += !fill.smoothing_note.empty();
+          patches.push_back({fill.patch.boundary, fill.patch.faces, fill.patch.new_vertices});
+        }
+        std::string notes;
+        if (failed) notes += std::to_string(failed) + " not filled ";
+        if (fell_back) notes += std::to_string(fell_back) + " fell back to umbrella";
+        print_row(shape.name, sizes, method.weight, method.smoothing, measure(mesh, patches, truth),
+                  notes);
+        write(mesh, method.weight + "-" + method.smoothing);
+      }
+#ifdef HOLEFILL_QUALITY_WITH_CGAL
+      if (wanted("cgal")) {
+        std::size_t unfaired = 0;
+        std::vector<FilledHole> patches;
+        const Mesh filled = fill_with_cgal(cut->mesh, loops, patches, unfaired);
+        print_row(shape.name, sizes, "CGAL", "CGAL", measure(filled, patches, truth),
+                  unfaired ? std::to_string(unfaired) + " not faired" : "");
+        write(filled, "cgal");
+      }
+#endif
+      if (wanted("truth")) {
+        print_row(shape.name, sizes, "–", "truth (cut faces)",
+                  measure(closed, truth_patches(closed, *cut, loops), truth), "");
+      }
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace holefill::quality
+
+int main(int argc, char** argv) {
+  try {
+    return holefill::quality::run(argc, argv);
+  } catch (const holefill::quality::UsageError& error) {
+    std::cerr << "holefill-quality: " << error.message << "\n" << holefill::quality::kUsage;
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "holefill-quality: " << error.what() << "\n";
+    return 1;
+  }
+}
