@@ -42,6 +42,8 @@ constexpr const char* kFillHelp = R"(usage: holefill fill MESH -o OUT [options]
 
   -o, --output OUT            where to write the result (.obj .off .ply); written atomically
   --weight maxmin|liepa|area  triangulation weight (default maxmin, the paper's)
+  --fold-limit DEG            maxmin: triangles folded over a neighbour by more than DEG
+                              count as defects (default 90; 180 = the paper's exact order)
   --tau T                     refinement density factor, > 0 (default 1.41421, sqrt 2)
   --smooth umbrella|fair      umbrella smoothing (the paper's, default) or fairing that
                               continues the surrounding curvature
@@ -149,6 +151,11 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
       if (!parse_weight(text, options.triangulate.weight)) {
         throw UsageError{"--weight takes maxmin, liepa or area, got '" + text + "'"};
       }
+    } else if (arg == "--fold-limit") {
+      const double degrees = parse_number(arg, value());
+      if (!(degrees > 0.0 && degrees <= 180.0))
+        throw UsageError{"--fold-limit must be in (0, 180]"};
+      options.triangulate.fold_limit = degrees * M_PI / 180.0;
     } else if (arg == "--tau") {
       options.refine.tau = parse_number(arg, value());
       if (options.refine.tau <= 0.0) throw UsageError{"--tau must be greater than 0"};

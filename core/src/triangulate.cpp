@@ -85,7 +85,7 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
         TriangleMeasures measures = measure_triangle(p[i], p[m], p[k], Weight::kUsesMinAngle);
         if constexpr (Weight::kUsesDihedral) {
           if (prune && have_best &&
-              !weight.less(Weight::combine(value, Weight::of(measures)), best)) {
+              !weight.less(Weight::combine(value, weight.of(measures)), best)) {
             continue;
           }
           const Point normal = unit_normal(p[i], p[m], p[k]);
@@ -96,7 +96,7 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
           }
           measures.max_dihedral = worst;
         }
-        value = Weight::combine(value, Weight::of(measures));
+        value = Weight::combine(value, weight.of(measures));
         if (!have_best || weight.less(value, best)) {
           best = value;
           best_apex = static_cast<std::uint16_t>(m);
@@ -208,7 +208,8 @@ std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polyg
   if (polygon.points.size() < 3 || polygon.points.size() >= kMaxPolygonSize) return std::nullopt;
   switch (options.weight) {
     case WeightKind::MaxMin:
-      return solve(polygon, MaxMinWeight{options.angle_tolerance}, options.prune);
+      return solve(polygon, MaxMinWeight{options.angle_tolerance, options.fold_limit},
+                   options.prune);
     case WeightKind::Liepa:
       return solve(polygon, LiepaWeight{options.angle_tolerance}, options.prune);
     case WeightKind::Area:

@@ -53,5 +53,22 @@ INSTANTIATE_TEST_SUITE_P(
       return name + "_" + to_string(std::get<1>(info.param));
     });
 
+// On the sphere's ragged 406-edge hole the paper's order buys its smallest angle with a patch
+// folded over itself; the default fold limit keeps maxmin's patch unfolded.
+TEST(MaxMinFoldLimit, KeepsTheSpherePatchUnfolded) {
+  const Mesh before = load_mesh(std::filesystem::path(HOLEFILL_ASSETS_DIR) / "sphere.obj");
+  const auto holes = find_holes(before);
+  ASSERT_EQ(holes.size(), 1u);
+  auto max_dihedral_deg = [&](double fold_limit) {
+    Mesh mesh = before;
+    FillOptions options;
+    options.triangulate.fold_limit = fold_limit;
+    options.last_stage = Stage::Triangulated;
+    return fill_hole(mesh, holes[0], options).stats.max_dihedral_deg;
+  };
+  EXPECT_GT(max_dihedral_deg(M_PI), 90.0);
+  EXPECT_LT(max_dihedral_deg(kDefaultFoldLimit), 90.0);
+}
+
 }  // namespace
 }  // namespace holefill

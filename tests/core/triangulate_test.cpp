@@ -84,7 +84,9 @@ TEST(Triangulate, MaxMinMaximisesTheSmallestAngleLikeBruteForce) {
     const std::set<std::pair<int, int>> forbidden(polygon.forbidden_chords.begin(),
                                                   polygon.forbidden_chords.end());
     const auto candidates = all_triangulations(0, n - 1, forbidden, n);
-    const auto dp = triangulate_polygon(polygon, {WeightKind::MaxMin});
+    // The paper's order (no fold limit) maximises the smallest angle outright.
+    const auto dp =
+        triangulate_polygon(polygon, {WeightKind::MaxMin, kDefaultAngleTolerance, M_PI});
     ASSERT_EQ(dp.has_value(), !candidates.empty());
     if (!dp) continue;
     double best = 0.0;
@@ -110,10 +112,10 @@ TEST(Triangulate, EveryWeightIsOptimalUnderItsFullOrderOnQuadrilaterals) {
     auto as_liepa = [](const TriangulationQuality& q) {
       return LiepaWeight::Value{q.degenerate, q.max_dihedral, q.area};
     };
-    const auto maxmin = triangulate_polygon(polygon, {WeightKind::MaxMin, 0.0});
+    const auto maxmin = triangulate_polygon(polygon, {WeightKind::MaxMin, 0.0, M_PI});
     const auto liepa = triangulate_polygon(polygon, {WeightKind::Liepa, 0.0});
     ASSERT_TRUE(maxmin && liepa);
-    const MaxMinWeight maxmin_order{0.0};
+    const MaxMinWeight maxmin_order{0.0, M_PI};
     const LiepaWeight liepa_order{0.0};
     const bool maxmin_prefers_02 = maxmin_order.less(as_maxmin(q02), as_maxmin(q13));
     const bool liepa_prefers_02 = liepa_order.less(as_liepa(q02), as_liepa(q13));

@@ -6,6 +6,9 @@
 //          a larger smallest angle is better, then a smaller dihedral, then a smaller area.
 // Every weight puts the number of degenerate (zero-area) triangles first, so that a degenerate
 // candidate is the worst choice under any weight, never a NaN and never a "free" zero area.
+// maxmin also counts there the triangles folded over a neighbour (dihedral angle beyond a limit,
+// 90 degrees by default): the smallest angle alone happily folds a patch on a curved hole, so
+// any fold-free triangulation wins; a limit of pi reproduces the paper's order exactly.
 #pragma once
 
 #include <algorithm>
@@ -32,6 +35,7 @@ struct TriangleMeasures {
 // Angles closer than this (radians) compare as equal, so that the paper's tie-breaks (dihedral,
 // then area) take effect despite floating-point noise in angles that are equal in exact terms.
 inline constexpr double kDefaultAngleTolerance = 1e-9;
+inline constexpr double kDefaultFoldLimit = M_PI / 2.0;
 
 struct AreaWeight {
   static constexpr bool kUsesDihedral = false;
@@ -80,15 +84,17 @@ struct MaxMinWeight {
   static constexpr bool kUsesDihedral = true;
   static constexpr bool kUsesMinAngle = true;
   double angle_tolerance = kDefaultAngleTolerance;
+  double fold_limit = kDefaultFoldLimit;
   struct Value {
-    int degenerate = 0;
+    int degenerate = 0;  // degenerate or folded triangles
     double min_angle = std::numeric_limits<double>::infinity();
     double max_dihedral = 0.0;
     double area = 0.0;
   };
   static Value identity() { return {}; }
-  static Value of(const TriangleMeasures& t) {
-    return {t.degenerate ? 1 : 0, t.min_angle, t.max_dihedral, t.area};
+  Value of(const TriangleMeasures& t) const {
+    const bool defect = t.degenerate || t.max_dihedral > fold_limit;
+    return {defect ? 1 : 0, t.min_angle, t.max_dihedral, t.area};
   }
   static Value combine(const Value& a, const Value& b) {
     return {a.degenerate + b.degenerate, std::min(a.min_angle, b.min_angle),
