@@ -23,9 +23,6 @@ struct UiState {
   bool mesh_opened = false;
 };
 
-// The panel's width in window pixels; the 3D view takes the rest.
-constexpr float kPanelWidth = 390.0f;
-
 void draw_panels(Session& session, UiState& ui, float window_height);
 
 }  // namespace holefill::viewer
