@@ -77,7 +77,7 @@ double half_cotangent_opposite(const Mesh& mesh, HalfedgeHandle h) {
 double cotangent_weight(const Mesh& mesh, HalfedgeHandle h) {
   const double weight = half_cotangent_opposite(mesh, h) +
                         half_cotangent_opposite(mesh, mesh.opposite_halfedge_handle(h));
-  return std::max(weight, 0.0);
+  return weight;
 }
 
 // The mixed Voronoi area of vertex p in triangle (p, q, r) (Meyer, Desbrun, Schroeder & Barr

@@ -128,6 +128,9 @@ Mesh load_obj(const fs::path& path, LoadReport& report) {
 }
 
 Mesh load_with_openmesh(const fs::path& path) {
+  // OpenMesh reports problems on its own streams; ours go through FileError and LoadReport.
+  omerr().disable();
+  omlog().disable();
   Mesh mesh;
   OpenMesh::IO::Options options;
   bool ok = false;

@@ -46,6 +46,14 @@ TriangulateHoleResult triangulate_hole(Mesh& mesh, const Hole& hole,
                      std::to_string(kMaxPolygonSize - 1) + " are supported";
     return result;
   }
+  std::unordered_map<int, int> seen;
+  for (const auto v : hole.vertices) {
+    if (++seen[v.idx()] > 1) {
+      result.failure = "its boundary passes twice through vertex " + std::to_string(v.idx() + 1) +
+                       " (a pinched hole); filling it would leave a non-manifold vertex";
+      return result;
+    }
+  }
   const HolePolygon polygon = hole_polygon(mesh, hole);
   const auto triangulation = triangulate_polygon(polygon, options);
   if (!triangulation) {

@@ -53,9 +53,8 @@ double mean_sphere_error(const Mesh& mesh, const Patch& patch) {
 
 // A height field over [0,1]^2 (grid spacing 1/29) with a round hole in the middle.
 Mesh terrain_with_hole(const std::function<double(double, double)>& height) {
-  return without_faces(make_grid(30, height), [](const Point& c) {
-    return std::hypot(c[0] - 0.5, c[1] - 0.5) < 0.3;
-  });
+  return without_faces(make_grid(30, height),
+                       [](const Point& c) { return std::hypot(c[0] - 0.5, c[1] - 0.5) < 0.3; });
 }
 
 // The inner hole of a terrain (the outer border has more edges, so it is hole 0).

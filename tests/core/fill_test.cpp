@@ -138,6 +138,25 @@ TEST(Fill, NeverDuplicatesAnEdgeThatAlreadyJoinsTwoBoundaryVertices) {
   }
 }
 
+TEST(Fill, RefusesAPinchedLoopAndLeavesTheMeshAsItWas) {
+  // Two triangles touching at one vertex: a single boundary loop through it twice.
+  Mesh before;
+  VertexHandle v[5];
+  const Point points[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+  for (int i = 0; i < 5; ++i) v[i] = before.add_vertex(points[i]);
+  before.add_face(v[0], v[1], v[2]);
+  before.add_face(v[0], v[3], v[4]);
+  const auto holes = find_holes(before);
+  ASSERT_EQ(holes.size(), 1u);
+  EXPECT_TRUE(holes[0].pinched);
+  Mesh mesh = before;
+  const HoleFill fill = fill_hole(mesh, holes[0], {});
+  EXPECT_TRUE(fill.failed());
+  EXPECT_NE(fill.failure.find("pinched"), std::string::npos);
+  EXPECT_EQ(mesh.n_faces(), before.n_faces());
+  EXPECT_EQ(mesh.n_vertices(), before.n_vertices());
+}
+
 TEST(Refine, PatchEdgesTrackTheSurroundingDensity) {
   const Mesh before = sphere_with_two_holes();
   const auto holes = find_holes(before);
