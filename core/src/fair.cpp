@@ -155,6 +155,57 @@ Operator build_operator(const Mesh& mesh, const Region& region, const FairOption
   return op;
 }
 
+// One solve of the linear system on the mesh's current geometry; on success writes the
+// unknowns' new positions into the mesh. Returns the problem otherwise, the mesh unchanged.
+std::string solve(Mesh& mesh, const Region& region, const FairOptions& options,
+                  FairResult& result) {
+  const int n = static_cast<int>(region.vertices.size());
+  const int unknowns = static_cast<int>(region.unknowns), fixed = n - unknowns;
+  Eigen::MatrixXd positions(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const Point& p = mesh.point(region.vertices[i]);
+    positions.row(i) << p[0], p[1], p[2];
+  }
+  if (!positions.allFinite()) return "non-finite vertex coordinates in or around the patch";
+
+  const Operator op = build_operator(mesh, region, options);
+  if (!op.problem.empty()) return op.problem;
+  // K (M^-1 K)^(k-1): symmetric positive definite on the unknowns' block.
+  SparseMatrix system = op.stiffness;
+  for (int power = 1; power < options.order; ++power) {
+    system = SparseMatrix(op.stiffness * op.inverse_mass.asDiagonal() * system);
+  }
+  const SparseMatrix on_unknowns = system.block(0, 0, unknowns, unknowns);
+  const SparseMatrix on_fixed = system.block(0, unknowns, unknowns, fixed);
+  const Eigen::MatrixXd rhs = -(on_fixed * positions.bottomRows(fixed));
+
+  Eigen::SimplicialLDLT<SparseMatrix> solver(on_unknowns);
+  if (solver.info() != Eigen::Success) {
+    return "the fairing system could not be factorised (singular or not positive)";
+  }
+  const Eigen::VectorXd pivots = solver.vectorD();
+  const double smallest = pivots.minCoeff(), largest = pivots.cwiseAbs().maxCoeff();
+  if (!(smallest > 0.0)) {
+    return "the fairing system is singular (a patch vertex is not tied to the fixed ones)";
+  }
+  if (!(smallest > kMinPivotRatio * largest)) {
+    return "the fairing system is ill-conditioned (pivot ratio " +
+           std::to_string(smallest / largest) + ")";
+  }
+  const Eigen::MatrixXd solution = solver.solve(rhs);
+  const double rhs_norm = rhs.norm();
+  result.relative_residual =
+      rhs_norm > 0.0 ? (on_unknowns * solution - rhs).norm() / rhs_norm : solution.norm();
+  if (!solution.allFinite() || !(result.relative_residual <= kMaxRelativeResidual)) {
+    return "the fairing solve is inaccurate (relative residual " +
+           std::to_string(result.relative_residual) + ")";
+  }
+  for (int i = 0; i < unknowns; ++i) {
+    mesh.set_point(region.vertices[i], Point(solution(i, 0), solution(i, 1), solution(i, 2)));
+  }
+  return {};
+}
+
 }  // namespace
 
 FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options) {
@@ -171,70 +222,28 @@ FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options
     }
   }
   const Region region = gather_region(mesh, patch.new_vertices, options.order);
-  const int n = static_cast<int>(region.vertices.size());
-  const int unknowns = static_cast<int>(region.unknowns), fixed = n - unknowns;
   result.unknowns = region.unknowns;
-  result.fixed_vertices = static_cast<std::size_t>(fixed);
-  if (unknowns == 0) {
+  result.fixed_vertices = region.vertices.size() - region.unknowns;
+  if (region.unknowns == 0) {
     result.solved = true;
     return result;
   }
-  if (fixed == 0) {
+  if (result.fixed_vertices == 0) {
     result.problem = "no fixed vertices around the patch to continue";
     return result;
   }
-  Eigen::MatrixXd positions(n, 3);
-  for (int i = 0; i < n; ++i) {
-    const Point& p = mesh.point(region.vertices[i]);
-    positions.row(i) << p[0], p[1], p[2];
+  std::vector<Point> original;
+  for (std::size_t i = 0; i < region.unknowns; ++i) {
+    original.push_back(mesh.point(region.vertices[i]));
   }
-  if (!positions.allFinite()) {
-    result.problem = "non-finite vertex coordinates in or around the patch";
-    return result;
-  }
-
-  const Operator op = build_operator(mesh, region, options);
-  if (!op.problem.empty()) {
-    result.problem = op.problem;
-    return result;
-  }
-  // K (M^-1 K)^(k-1): symmetric positive definite on the unknowns' block.
-  SparseMatrix system = op.stiffness;
-  for (int power = 1; power < options.order; ++power) {
-    system = SparseMatrix(op.stiffness * op.inverse_mass.asDiagonal() * system);
-  }
-  const SparseMatrix on_unknowns = system.block(0, 0, unknowns, unknowns);
-  const SparseMatrix on_fixed = system.block(0, unknowns, unknowns, fixed);
-  const Eigen::MatrixXd rhs = -(on_fixed * positions.bottomRows(fixed));
-
-  Eigen::SimplicialLDLT<SparseMatrix> solver(on_unknowns);
-  if (solver.info() != Eigen::Success) {
-    result.problem = "the fairing system could not be factorised (singular or not positive)";
-    return result;
-  }
-  const Eigen::VectorXd pivots = solver.vectorD();
-  const double smallest = pivots.minCoeff(), largest = pivots.cwiseAbs().maxCoeff();
-  if (!(smallest > 0.0)) {
-    result.problem =
-        "the fairing system is singular (a patch vertex is not tied to the fixed ones)";
-    return result;
-  }
-  if (!(smallest > kMinPivotRatio * largest)) {
-    result.problem = "the fairing system is ill-conditioned (pivot ratio " +
-                     std::to_string(smallest / largest) + ")";
-    return result;
-  }
-  const Eigen::MatrixXd solution = solver.solve(rhs);
-  const double rhs_norm = rhs.norm();
-  result.relative_residual =
-      rhs_norm > 0.0 ? (on_unknowns * solution - rhs).norm() / rhs_norm : solution.norm();
-  if (!solution.allFinite() || !(result.relative_residual <= kMaxRelativeResidual)) {
-    result.problem = "the fairing solve is inaccurate (relative residual " +
-                     std::to_string(result.relative_residual) + ")";
-    return result;
-  }
-  for (int i = 0; i < unknowns; ++i) {
-    mesh.set_point(region.vertices[i], Point(solution(i, 0), solution(i, 1), solution(i, 2)));
+  for (int iteration = 0; iteration < std::max(options.iterations, 1); ++iteration) {
+    result.problem = solve(mesh, region, options, result);
+    if (!result.problem.empty()) {
+      for (std::size_t i = 0; i < region.unknowns; ++i) {
+        mesh.set_point(region.vertices[i], original[i]);
+      }
+      return result;
+    }
   }
   result.solved = true;
   return result;

@@ -1,7 +1,9 @@
 #include "holefill/fill.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <thread>
 
 namespace holefill {
 namespace {
@@ -26,17 +28,19 @@ void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options) {
   smooth_patch(mesh, fill.patch, options);
 }
 
-}  // namespace
-
-bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options) {
+// advance(), with the triangulation already planned when `plan` is given.
+bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options,
+                  const PlannedTriangulation* plan) {
   fill.hole_id = hole.id;
   fill.boundary_edges = hole.size();
   if (fill.failed()) return false;
   switch (fill.stage()) {
     case Stage::Original: {
       TriangulateHoleResult result;
-      fill.times.triangulate_seconds =
-          timed([&] { result = triangulate_hole(mesh, hole, options.triangulate); });
+      fill.times.triangulate_seconds += timed([&] {
+        result = plan ? apply_triangulation(mesh, hole, *plan)
+                      : triangulate_hole(mesh, hole, options.triangulate);
+      });
       if (!result.patch) {
         fill.failure = result.failure;
         return false;
@@ -58,11 +62,22 @@ bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& op
   return true;
 }
 
-HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options) {
+HoleFill fill_planned(Mesh& mesh, const Hole& hole, const FillOptions& options,
+                      const PlannedTriangulation* plan) {
   HoleFill fill;
-  while (fill.stage() < options.last_stage && advance(mesh, hole, fill, options)) {
+  while (fill.stage() < options.last_stage && advance_with(mesh, hole, fill, options, plan)) {
   }
   return fill;
+}
+
+}  // namespace
+
+bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options) {
+  return advance_with(mesh, hole, fill, options, nullptr);
+}
+
+HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options) {
+  return fill_planned(mesh, hole, options, nullptr);
 }
 
 bool HoleSelection::includes(const Hole& hole) const {
@@ -72,9 +87,32 @@ bool HoleSelection::includes(const Hole& hole) const {
 
 std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
                                  const FillOptions& options, const HoleSelection& selection) {
-  std::vector<HoleFill> fills;
+  std::vector<const Hole*> chosen;
   for (const auto& hole : holes) {
-    if (selection.includes(hole)) fills.push_back(fill_hole(mesh, hole, options));
+    if (selection.includes(hole)) chosen.push_back(&hole);
+  }
+  // The dynamic programs only read the mesh and dominate the time: run them on every core,
+  // largest holes first (holes come sorted by size), then add the patches one by one.
+  std::vector<PlannedTriangulation> plans(chosen.size());
+  std::vector<double> plan_seconds(chosen.size(), 0.0);
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < chosen.size(); i = next++) {
+      plan_seconds[i] =
+          timed([&] { plans[i] = plan_triangulation(mesh, *chosen[i], options.triangulate); });
+    }
+  };
+  const unsigned threads =
+      std::min<unsigned>(std::max(1u, std::thread::hardware_concurrency()), chosen.size());
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& thread : pool) thread.join();
+
+  std::vector<HoleFill> fills;
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    fills.push_back(fill_planned(mesh, *chosen[i], options, &plans[i]));
+    fills.back().times.triangulate_seconds += plan_seconds[i];
   }
   return fills;
 }

@@ -34,9 +34,9 @@ HolePolygon hole_polygon(const Mesh& mesh, const Hole& hole) {
   return polygon;
 }
 
-TriangulateHoleResult triangulate_hole(Mesh& mesh, const Hole& hole,
-                                       const TriangulateOptions& options) {
-  TriangulateHoleResult result;
+PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
+                                        const TriangulateOptions& options) {
+  PlannedTriangulation result;
   if (hole.size() < 3) {
     result.failure = "a boundary loop of fewer than 3 edges cannot be triangulated";
     return result;
@@ -54,20 +54,27 @@ TriangulateHoleResult triangulate_hole(Mesh& mesh, const Hole& hole,
       return result;
     }
   }
-  const HolePolygon polygon = hole_polygon(mesh, hole);
-  const auto triangulation = triangulate_polygon(polygon, options);
-  if (!triangulation) {
+  result.triangulation = triangulate_polygon(hole_polygon(mesh, hole), options);
+  if (!result.triangulation) {
     result.failure =
         "no valid triangulation: every one would duplicate an edge that already exists";
+  }
+  return result;
+}
+
+TriangulateHoleResult apply_triangulation(Mesh& mesh, const Hole& hole,
+                                          const PlannedTriangulation& plan) {
+  TriangulateHoleResult result;
+  if (!plan.triangulation) {
+    result.failure = plan.failure;
     return result;
   }
-
   PatchTags tags(mesh);
   Patch patch;
   patch.hole_id = hole.id;
   patch.stage = Stage::Triangulated;
   patch.boundary = hole.vertices;
-  for (const auto& t : triangulation->triangles) {
+  for (const auto& t : plan.triangulation->triangles) {
     const FaceHandle face =
         mesh.add_face(hole.vertices[t[0]], hole.vertices[t[1]], hole.vertices[t[2]]);
     if (!face.is_valid()) {
@@ -83,6 +90,11 @@ TriangulateHoleResult triangulate_hole(Mesh& mesh, const Hole& hole,
   }
   result.patch = std::move(patch);
   return result;
+}
+
+TriangulateHoleResult triangulate_hole(Mesh& mesh, const Hole& hole,
+                                       const TriangulateOptions& options) {
+  return apply_triangulation(mesh, hole, plan_triangulation(mesh, hole, options));
 }
 
 }  // namespace holefill

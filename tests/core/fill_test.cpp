@@ -102,6 +102,16 @@ TEST(Fill, StepsThroughTheStagesInOrder) {
   EXPECT_FALSE(fill.failed());
 }
 
+TEST(Fill, AllHolesAtOnceGivesTheSameMeshAsOneByOne) {
+  const Mesh before = sphere_with_two_holes();
+  const auto holes = find_holes(before);
+  Mesh together = before, one_by_one = before;
+  fill_holes(together, holes, {});
+  for (const auto& hole : holes) fill_hole(one_by_one, hole, {});
+  ASSERT_EQ(together.n_faces(), one_by_one.n_faces());
+  EXPECT_TRUE(original_part_unchanged(one_by_one, together));
+}
+
 TEST(Fill, StopsAfterTheRequestedStage) {
   Mesh mesh = sphere_with_two_holes();
   const auto holes = find_holes(mesh);

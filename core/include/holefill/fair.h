@@ -23,6 +23,7 @@ namespace holefill {
 struct FairOptions {
   int order = 2;                  // 2: bi-Laplacian (C1), 3: tri-Laplacian (C2)
   bool cotangent_weights = true;  // false: uniform (umbrella) weights
+  int iterations = 1;             // solves, each with weights from the previous one's result
 };
 
 struct FairResult {

@@ -84,8 +84,21 @@ struct TriangulateHoleResult {
   std::string failure;         // why not, otherwise
 };
 
-// Triangulates the hole and adds the triangles to the mesh (tagged Stage::Triangulated). On
-// failure the mesh is left exactly as it was.
+// The hole's triangulation, or why there is none. Reads the mesh only, so plans for several
+// holes can be made at once on several threads.
+struct PlannedTriangulation {
+  std::optional<PolygonTriangulation> triangulation;
+  std::string failure;
+};
+PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
+                                        const TriangulateOptions& options);
+
+// Adds a planned triangulation's triangles to the mesh (tagged Stage::Triangulated). On failure
+// the mesh is left exactly as it was.
+TriangulateHoleResult apply_triangulation(Mesh& mesh, const Hole& hole,
+                                          const PlannedTriangulation& plan);
+
+// plan_triangulation, then apply_triangulation.
 TriangulateHoleResult triangulate_hole(Mesh& mesh, const Hole& hole,
                                        const TriangulateOptions& options);
 
