@@ -39,6 +39,8 @@ const char* usage() {
          "  --compare-triangulation-only    compare the triangulation stage only\n"
          "  --size WxH                      window size (default 1280x800)\n"
          "  --screenshot OUT.png            render, save the window as PNG and exit\n"
+         "  --frames N                      with --screenshot: render N frames (turning the\n"
+         "                                  view a little each) and print the mean frame time\n"
          "  --help                          print this text\n";
 }
 
@@ -71,6 +73,10 @@ CommandLine parse_command_line(const std::vector<std::string>& arguments) {
       command.width = parse_int(size.substr(0, x), arg);
       command.height = parse_int(size.substr(x + 1), arg);
       if (command.width < 64 || command.height < 64) throw std::invalid_argument("--size is too small");
+    } else if (arg == "--frames") {
+      command.frames = parse_int(value(), arg);
+      command.report_frame_time = true;
+      if (command.frames < 4) throw std::invalid_argument("--frames needs at least 4");
     } else if (arg == "--screenshot") {
       command.screenshot = value();
     } else if (!arg.empty() && arg[0] == '-') {
@@ -83,6 +89,9 @@ CommandLine parse_command_line(const std::vector<std::string>& arguments) {
   }
   if (!command.run.empty() && !command.select_hole) {
     throw std::invalid_argument("--run needs --select-hole");
+  }
+  if (command.report_frame_time && command.screenshot.empty()) {
+    throw std::invalid_argument("--frames needs --screenshot");
   }
   if (command.compare && !command.select_hole) {
     throw std::invalid_argument("--compare needs --select-hole");

@@ -21,6 +21,8 @@ struct CommandLine {
   int width = 1280;
   int height = 800;
   std::filesystem::path screenshot;    // set: render, save this PNG and exit
+  int frames = 4;                      // frames scripted mode renders before the screenshot
+  bool report_frame_time = false;      // print the mean frame time (set by --frames)
   bool help = false;
 };
 

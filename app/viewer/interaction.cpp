@@ -46,7 +46,13 @@ void frame_hole(Camera& camera, const Session& session, int hole_id) {
   center /= static_cast<float>(std::max<std::size_t>(points.size(), 1));
   float radius = 0.0f;
   for (const auto& p : points) radius = std::max(radius, glm::length(p - center));
-  camera.frame(center, hole_view_direction(session.mesh(), hole), 1.6f * radius);
+  camera.frame(center, hole_view_direction(session.mesh(), hole), 2.0f * radius);
+}
+
+bool Interaction::take_mesh_opened() {
+  const bool opened = opened_;
+  opened_ = false;
+  return opened;
 }
 
 void Interaction::handle(const InputEvent& event, const SceneArea& area, bool ui_wants_mouse,
@@ -99,7 +105,7 @@ void Interaction::handle(const InputEvent& event, const SceneArea& area, bool ui
       }
       break;
     case InputEvent::Kind::Drop:
-      if (session.open(event.path)) fit_mesh(camera, session);
+      if (session.open(event.path)) opened_ = true;
       break;
   }
 }

@@ -41,6 +41,8 @@ class Interaction {
   void handle(const InputEvent& event, const SceneArea& area, bool ui_wants_mouse,
               bool ui_wants_keyboard, Camera& camera, Session& session);
   int hovered() const { return hovered_; }
+  // True once after a dropped file was opened (the frame loop then fits the view to it).
+  bool take_mesh_opened();
 
  private:
   enum class Drag { None, Pending, Orbit, Pan };
@@ -48,6 +50,7 @@ class Interaction {
   glm::vec2 press_{0.0f};
   glm::vec2 last_{0.0f};
   int hovered_ = -1;
+  bool opened_ = false;
 };
 
 }  // namespace holefill::viewer

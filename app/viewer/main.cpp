@@ -6,6 +6,9 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <epoxy/gl.h>
+
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -23,6 +26,15 @@
 namespace hv = holefill::viewer;
 
 namespace {
+
+// Past this many faces the wireframe covers the whole surface and costs most of the frame, so
+// a freshly opened mesh starts without it (the checkbox turns it back on).
+constexpr std::size_t kWireframeFaceLimit = 200'000;
+
+void mesh_opened(hv::Camera& camera, const hv::Session& session, hv::UiState& ui) {
+  hv::fit_mesh(camera, session);
+  ui.display.wireframe = session.mesh().n_faces() <= kWireframeFaceLimit;
+}
 
 // Carries out the command line's actions on the session; false (with a message) on failure.
 bool run_script(const hv::CommandLine& command, hv::Session& session) {
@@ -91,10 +103,11 @@ int run(const hv::CommandLine& command, const char* executable) {
   hv::UiState ui;
   ui.mesh_path = mesh_path.string();
   camera.set_viewport(scene_area(window).size);
-  hv::fit_mesh(camera, session);
+  mesh_opened(camera, session, ui);
   if (session.selected() >= 0) hv::frame_hole(camera, session, session.selected());
 
   int status = 0;
+  std::chrono::steady_clock::time_point timer_start;
   for (int frame = 0; !window.should_close(); ++frame) {
     const hv::SceneArea area = scene_area(window);
     for (const auto& event : window.poll()) {
@@ -108,7 +121,7 @@ int run(const hv::CommandLine& command, const char* executable) {
     ImGui::NewFrame();
     hv::draw_panels(session, ui, static_cast<float>(window.size().y));
     ImGui::Render();
-    if (ui.mesh_opened) hv::fit_mesh(camera, session);
+    if (ui.mesh_opened || interaction.take_mesh_opened()) mesh_opened(camera, session, ui);
     if (ui.fit_view) hv::fit_mesh(camera, session);
     if (ui.reset_view) camera.reset();
     if (ui.frame_selected) hv::frame_hole(camera, session, session.selected());
@@ -128,8 +141,20 @@ int run(const hv::CommandLine& command, const char* executable) {
         std::fprintf(stderr, "holefill-viewer: %s\n", error.what());
       }
     }
+    if (command.report_frame_time && frame == 1) timer_start = std::chrono::steady_clock::now();
+    if (command.report_frame_time && frame >= 1) {
+      camera.begin_orbit(camera.viewport() * 0.5f);
+      camera.orbit_to(camera.viewport() * 0.5f + glm::vec2(2.0f, 0.0f));
+    }
     // ImGui lays windows out over its first frames; a few frames settle the picture.
-    if (scripted && frame >= 3) {
+    if (scripted && frame >= command.frames - 1) {
+      if (command.report_frame_time) {
+        glFinish();
+        const std::chrono::duration<double, std::milli> spent =
+            std::chrono::steady_clock::now() - timer_start;
+        std::printf("frame time: %.1f ms mean over %d frames (%zu triangles)\n",
+                    spent.count() / (frame - 1), frame - 1, session.mesh().n_faces());
+      }
       try {
         save_screenshot(renderer, window, command.screenshot);
       } catch (const std::exception& error) {
