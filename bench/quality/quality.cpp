@@ -100,7 +100,10 @@ std::optional<FillOptions> smoothing_options(const std::string& name) {
   if (name.rfind("fair-cot-", 0) == 0 || name.rfind("fair-uniform-", 0) == 0) {
     options.smooth.method = SmoothMethod::Fair;
     options.smooth.fair.cotangent_weights = name.rfind("fair-cot-", 0) == 0;
-    options.smooth.fair.order = name.back() - '0';
+    // fair-cot-2, or fair-cot-2x3 for three solves, each with the previous one's weights
+    const auto x = name.find('x', 9);
+    options.smooth.fair.order = name[(x == std::string::npos ? name.size() : x) - 1] - '0';
+    if (x != std::string::npos) options.smooth.fair.iterations = std::stoi(name.substr(x + 1));
     if (options.smooth.fair.order == 2 || options.smooth.fair.order == 3) return options;
   }
   return std::nullopt;

