@@ -6,7 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <utility>
 #include <vector>
+
+#include "palette.h"
 
 namespace holefill::viewer {
 namespace {
@@ -49,6 +53,7 @@ void patch_statistics(const HoleFill& fill) {
   ImGui::Text("Max dihedral %.2f deg   area %.4g", s.max_dihedral_deg, s.area);
   ImGui::Text("Times: tri %.1f  ref %.1f  smo %.1f ms", 1e3 * fill.times.triangulate_seconds,
               1e3 * fill.times.refine_seconds, 1e3 * fill.times.smooth_seconds);
+  if (!fill.smoothing_note.empty()) ImGui::TextWrapped("%s", fill.smoothing_note.c_str());
 }
 
 void file_section(Session& session, UiState& ui) {
@@ -146,6 +151,12 @@ void options_section(Session& session) {
     options.refine.tau = std::abs(tau - kSqrt2) < 1e-6f ? std::sqrt(2.0) : tau;
     changed = true;
   }
+  int method = options.smooth.method == SmoothMethod::Fair ? 1 : 0;
+  ImGui::SetNextItemWidth(150.0f);
+  if (ImGui::Combo("smoothing", &method, "umbrella (paper)\0fair (bi-Laplacian)\0")) {
+    options.smooth.method = method == 1 ? SmoothMethod::Fair : SmoothMethod::Umbrella;
+    changed = true;
+  }
   ImGui::SetNextItemWidth(150.0f);
   changed |= ImGui::SliderInt("smoothing iterations", &options.smooth.iterations, 0, 100);
   float step = static_cast<float>(options.smooth.step);
@@ -241,7 +252,21 @@ void comparison_section(Session& session) {
   }
 }
 
+ImVec4 color(const palette::Rgb& c) { return ImVec4(c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, 1.0f); }
+
+void legend() {
+  const std::pair<const palette::Rgb*, const char*> entries[] = {
+      {&palette::kTriangulated, "triangulated"}, {&palette::kRefined, "refined"},
+      {&palette::kPatchVertex, "new vertex"},    {&palette::kBoundary, "hole"},
+      {&palette::kSelectedBoundary, "selected"}, {&palette::kHoveredBoundary, "hovered"}};
+  for (std::size_t i = 0; i < std::size(entries); ++i) {
+    if (i % 3) ImGui::SameLine();
+    ImGui::TextColored(color(*entries[i].first), "# %-12s", entries[i].second);
+  }
+}
+
 void display_section(UiState& ui) {
+  legend();
   ImGui::Checkbox("wireframe", &ui.display.wireframe);
   ImGui::SameLine();
   ImGui::Checkbox("flat shading", &ui.display.flat);
