@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace holefill::viewer {
@@ -28,7 +27,8 @@ glm::vec3 Camera::arcball_point(const glm::vec2& cursor) const {
   // The cursor on a unit sphere spanning the smaller viewport side; outside it, a hyperbolic
   // sheet continues smoothly so that drags beyond the sphere still rotate.
   const float scale = 0.5f * std::min(viewport_.x, viewport_.y);
-  const glm::vec2 p{(cursor.x - 0.5f * viewport_.x) / scale, (0.5f * viewport_.y - cursor.y) / scale};
+  const glm::vec2 p{(cursor.x - 0.5f * viewport_.x) / scale,
+                    (0.5f * viewport_.y - cursor.y) / scale};
   const float r2 = glm::dot(p, p);
   const float z = r2 <= 0.5f ? std::sqrt(1.0f - r2) : 0.5f / std::sqrt(r2);
   return glm::normalize(glm::vec3(p, z));

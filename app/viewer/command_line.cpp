@@ -21,7 +21,8 @@ int parse_int(const std::string& text, const std::string& option) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used != text.size()) throw std::invalid_argument(option + " needs a number, got '" + text + "'");
+  if (used != text.size())
+    throw std::invalid_argument(option + " needs a number, got '" + text + "'");
   return value;
 }
 
@@ -58,7 +59,8 @@ CommandLine parse_command_line(const std::vector<std::string>& arguments) {
       command.select_hole = parse_int(value(), arg);
     } else if (arg == "--run") {
       std::stringstream stages(value());
-      for (std::string name; std::getline(stages, name, ',');) command.run.push_back(parse_stage(name));
+      for (std::string name; std::getline(stages, name, ',');)
+        command.run.push_back(parse_stage(name));
     } else if (arg == "--fill-all") {
       command.fill_all = true;
     } else if (arg == "--compare") {
@@ -69,10 +71,12 @@ CommandLine parse_command_line(const std::vector<std::string>& arguments) {
     } else if (arg == "--size") {
       const std::string& size = value();
       const auto x = size.find('x');
-      if (x == std::string::npos) throw std::invalid_argument("--size needs WxH, got '" + size + "'");
+      if (x == std::string::npos)
+        throw std::invalid_argument("--size needs WxH, got '" + size + "'");
       command.width = parse_int(size.substr(0, x), arg);
       command.height = parse_int(size.substr(x + 1), arg);
-      if (command.width < 64 || command.height < 64) throw std::invalid_argument("--size is too small");
+      if (command.width < 64 || command.height < 64)
+        throw std::invalid_argument("--size is too small");
     } else if (arg == "--frames") {
       command.frames = parse_int(value(), arg);
       command.report_frame_time = true;
@@ -100,7 +104,8 @@ CommandLine parse_command_line(const std::vector<std::string>& arguments) {
 }
 
 std::filesystem::path default_mesh_path(const std::filesystem::path& executable) {
-  const std::filesystem::path compiled_in = std::filesystem::path(HOLEFILL_ASSETS_DIR) / "bunny.obj";
+  const std::filesystem::path compiled_in =
+      std::filesystem::path(HOLEFILL_ASSETS_DIR) / "bunny.obj";
   if (std::filesystem::exists(compiled_in)) return compiled_in;
   std::filesystem::path folder = executable.parent_path();
   for (int up = 0; up < 4 && !folder.empty(); ++up, folder = folder.parent_path()) {

@@ -12,17 +12,17 @@
 namespace holefill::viewer {
 
 struct CommandLine {
-  std::filesystem::path mesh;          // empty: the bundled bunny
+  std::filesystem::path mesh;  // empty: the bundled bunny
   std::optional<int> select_hole;
-  std::vector<Stage> run;              // stages to run on the selected hole, in order
+  std::vector<Stage> run;  // stages to run on the selected hole, in order
   bool fill_all = false;
   bool compare = false;
   bool compare_triangulation_only = false;
   int width = 1280;
   int height = 800;
-  std::filesystem::path screenshot;    // set: render, save this PNG and exit
-  int frames = 4;                      // frames scripted mode renders before the screenshot
-  bool report_frame_time = false;      // print the mean frame time (set by --frames)
+  std::filesystem::path screenshot;  // set: render, save this PNG and exit
+  int frames = 4;                    // frames scripted mode renders before the screenshot
+  bool report_frame_time = false;    // print the mean frame time (set by --frames)
   bool help = false;
 };
 

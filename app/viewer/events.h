@@ -2,9 +2,8 @@
 // and neither side needs the other's library.
 #pragma once
 
-#include <string>
-
 #include <glm/glm.hpp>
+#include <string>
 
 namespace holefill::viewer {
 
@@ -15,11 +14,11 @@ struct InputEvent {
   Kind kind = Kind::CursorMove;
   glm::vec2 cursor{0.0f};  // window pixels, top-left origin, at the time of the event
   MouseButton button = MouseButton::Left;
-  float scroll = 0.0f;     // positive: away from the user
-  int key = 0;             // an upper-case letter, or one of the Key codes below
+  float scroll = 0.0f;  // positive: away from the user
+  int key = 0;          // an upper-case letter, or one of the Key codes below
   bool shift = false;
   bool control = false;
-  std::string path;        // a dropped file
+  std::string path;  // a dropped file
 };
 
 enum Key : int { kKeyEscape = 256, kKeyDelete = 261 };

@@ -1,9 +1,8 @@
 #include "gl_program.h"
 
+#include <glm/gtc/type_ptr.hpp>
 #include <stdexcept>
 #include <string>
-
-#include <glm/gtc/type_ptr.hpp>
 
 #include "shader_sources.h"
 

@@ -3,9 +3,8 @@
 
 #include <epoxy/gl.h>
 
-#include <string_view>
-
 #include <glm/glm.hpp>
+#include <string_view>
 
 namespace holefill::viewer {
 

@@ -75,8 +75,8 @@ void Interaction::handle(const InputEvent& event, const SceneArea& area, bool ui
       last_ = event.cursor;
       if (drag_ == Drag::None) {
         const bool over_scene = !ui_wants_mouse && area.contains(event.cursor);
-        const auto hole = over_scene ? hole_under_cursor(session, camera, area, event.cursor)
-                                     : std::nullopt;
+        const auto hole =
+            over_scene ? hole_under_cursor(session, camera, area, event.cursor) : std::nullopt;
         hovered_ = hole.value_or(-1);
       }
       break;
@@ -94,12 +94,17 @@ void Interaction::handle(const InputEvent& event, const SceneArea& area, bool ui
     case InputEvent::Kind::Key:
       if (ui_wants_keyboard) return;
       if (event.control && event.key == 'Z') {
-        if (event.shift) session.redo(); else session.undo();
+        if (event.shift)
+          session.redo();
+        else
+          session.undo();
       } else if (event.control && event.key == 'Y') {
         session.redo();
       } else if (event.key == 'F') {
-        if (session.selected() >= 0) frame_hole(camera, session, session.selected());
-        else fit_mesh(camera, session);
+        if (session.selected() >= 0)
+          frame_hole(camera, session, session.selected());
+        else
+          fit_mesh(camera, session);
       } else if (event.key == 'R') {
         camera.reset();
       }

@@ -4,9 +4,8 @@
 // actions first, renders a few frames, saves the PNG and exits.
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
-#include <imgui.h>
-
 #include <epoxy/gl.h>
+#include <imgui.h>
 
 #include <chrono>
 #include <cstdio>
@@ -68,7 +67,8 @@ hv::SceneArea scene_area(const hv::Window& window) {
 }
 
 hv::PixelRect to_framebuffer(const hv::SceneArea& area, const hv::Window& window) {
-  const glm::vec2 scale = glm::vec2(window.framebuffer_size()) / glm::max(glm::vec2(window.size()), 1.0f);
+  const glm::vec2 scale =
+      glm::vec2(window.framebuffer_size()) / glm::max(glm::vec2(window.size()), 1.0f);
   return {static_cast<int>(area.origin.x * scale.x), static_cast<int>(area.origin.y * scale.y),
           static_cast<int>(area.size.x * scale.x), static_cast<int>(area.size.y * scale.y)};
 }
@@ -92,7 +92,8 @@ int run(const hv::CommandLine& command, const char* executable) {
   hv::Window window(command.width, command.height, "holefill viewer");
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; no imgui.ini next to the user's files
+  ImGui::GetIO().IniFilename =
+      nullptr;  // the layout is fixed; no imgui.ini next to the user's files
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
   ImGui_ImplOpenGL3_Init("#version 330 core");

@@ -138,7 +138,8 @@ void BoundaryBuffers::upload(const std::vector<BoundarySegment>& segments) {
   std::vector<LineCorner> corners;
   corners.reserve(6 * segments.size());
   for (const auto& segment : segments) {
-    for (const auto& corner : kQuad) corners.push_back({segment.a, segment.b, corner, segment.hole_id});
+    for (const auto& corner : kQuad)
+      corners.push_back({segment.a, segment.b, corner, segment.hole_id});
   }
   fill_buffer(GL_ARRAY_BUFFER, vertices_, corners);
   count_ = static_cast<GLsizei>(corners.size());

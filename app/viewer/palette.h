@@ -10,14 +10,14 @@ namespace holefill::viewer::palette {
 using Rgb = std::array<std::uint8_t, 3>;
 
 inline constexpr Rgb kBackground{33, 36, 43};
-inline constexpr Rgb kSurface{200, 190, 174};       // original faces
-inline constexpr Rgb kTriangulated{77, 140, 242};   // faces the triangulation added
-inline constexpr Rgb kRefined{89, 204, 115};        // faces the refinement added
+inline constexpr Rgb kSurface{200, 190, 174};      // original faces
+inline constexpr Rgb kTriangulated{77, 140, 242};  // faces the triangulation added
+inline constexpr Rgb kRefined{89, 204, 115};       // faces the refinement added
 inline constexpr Rgb kWireframe{40, 40, 48};
 inline constexpr Rgb kPatchVertex{230, 40, 25};
-inline constexpr Rgb kBoundary{255, 140, 0};        // an unfilled hole's boundary loop
+inline constexpr Rgb kBoundary{255, 140, 0};  // an unfilled hole's boundary loop
 inline constexpr Rgb kSelectedBoundary{255, 0, 255};
 inline constexpr Rgb kHoveredBoundary{0, 255, 255};
-inline constexpr Rgb kDivider{255, 216, 0};         // between the comparison's two views
+inline constexpr Rgb kDivider{255, 216, 0};  // between the comparison's two views
 
 }  // namespace holefill::viewer::palette

@@ -76,9 +76,10 @@ void file_section(Session& session, UiState& ui) {
 void hole_list(Session& session, UiState& ui) {
   ImGui::Text("%s: %zu holes", session.name().c_str(), session.holes().size());
   const float rows = static_cast<float>(std::min<std::size_t>(session.holes().size(), 6) + 1);
-  if (ImGui::BeginTable("holes", 4,
-                        ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersOuter,
-                        ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 6.0f))) {
+  if (ImGui::BeginTable(
+          "holes", 4,
+          ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersOuter,
+          ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 6.0f))) {
     ImGui::TableSetupScrollFreeze(0, 1);
     ImGui::TableSetupColumn("hole");
     ImGui::TableSetupColumn("edges");
@@ -186,9 +187,9 @@ void step_section(Session& session) {
 
   if (ImGui::Button("Fill all holes")) session.fill_all();
   ImGui::SameLine();
-  const bool untouched = session.selected() < 0 ||
-                         (session.fill(session.selected()).stage() == Stage::Original &&
-                          !session.fill(session.selected()).failed());
+  const bool untouched =
+      session.selected() < 0 || (session.fill(session.selected()).stage() == Stage::Original &&
+                                 !session.fill(session.selected()).failed());
   ImGui::BeginDisabled(untouched);
   if (ImGui::Button("Reset hole")) session.reset_selected();
   ImGui::EndDisabled();
@@ -252,7 +253,9 @@ void comparison_section(Session& session) {
   }
 }
 
-ImVec4 color(const palette::Rgb& c) { return ImVec4(c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, 1.0f); }
+ImVec4 color(const palette::Rgb& c) {
+  return ImVec4(c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, 1.0f);
+}
 
 void legend() {
   const std::pair<const palette::Rgb*, const char*> entries[] = {

@@ -4,10 +4,9 @@
 // reliable when a hole is seen edge-on, where its polygon collapses to a line. No GL here.
 #pragma once
 
+#include <glm/glm.hpp>
 #include <optional>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace holefill::viewer {
 

@@ -4,9 +4,8 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "holefill/fill.h"
 
@@ -14,10 +13,10 @@ namespace holefill::viewer {
 
 struct SurfaceArrays {
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;          // area-weighted vertex normals
-  std::vector<std::uint32_t> triangles;    // 3 per face, in face order
-  std::vector<std::uint8_t> face_stages;   // Stage per face (Original outside patches)
-  std::vector<std::uint32_t> edges;        // 2 per edge, for the wireframe
+  std::vector<glm::vec3> normals;             // area-weighted vertex normals
+  std::vector<std::uint32_t> triangles;       // 3 per face, in face order
+  std::vector<std::uint8_t> face_stages;      // Stage per face (Original outside patches)
+  std::vector<std::uint32_t> edges;           // 2 per edge, for the wireframe
   std::vector<std::uint32_t> patch_vertices;  // vertices the patches added
   glm::vec3 lo{0.0f};
   glm::vec3 hi{0.0f};

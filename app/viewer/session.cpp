@@ -163,7 +163,8 @@ const Comparison* Session::comparison() {
     Mesh mesh = loaded_;
     std::vector<HoleFill> fills(holes_.size());
     for (const auto& step : log_) {
-      if (step.hole_id != selected_) advance(mesh, holes_[step.hole_id], fills[step.hole_id], step.options);
+      if (step.hole_id != selected_)
+        advance(mesh, holes_[step.hole_id], fills[step.hole_id], step.options);
     }
     comparison_ = compare_weights(mesh, holes_[selected_], options_, compare_triangulation_only_);
     comparison_stale_ = false;
@@ -195,7 +196,8 @@ void Session::restore(Snapshot snapshot) {
 void Session::replay() {
   mesh_ = loaded_;
   fills_.assign(holes_.size(), HoleFill{});
-  for (const auto& step : log_) advance(mesh_, holes_[step.hole_id], fills_[step.hole_id], step.options);
+  for (const auto& step : log_)
+    advance(mesh_, holes_[step.hole_id], fills_[step.hole_id], step.options);
   changed();
 }
 

@@ -26,8 +26,8 @@ struct WindowCallbacks {
   static void button(GLFWwindow* handle, int button, int action, int mods) {
     Window& window = of(handle);
     modifiers(window, mods);
-    InputEvent e = event(window, action == GLFW_PRESS ? InputEvent::Kind::ButtonDown
-                                                      : InputEvent::Kind::ButtonUp);
+    InputEvent e = event(
+        window, action == GLFW_PRESS ? InputEvent::Kind::ButtonDown : InputEvent::Kind::ButtonUp);
     e.button = button == GLFW_MOUSE_BUTTON_RIGHT    ? MouseButton::Right
                : button == GLFW_MOUSE_BUTTON_MIDDLE ? MouseButton::Middle
                                                     : MouseButton::Left;
@@ -49,10 +49,14 @@ struct WindowCallbacks {
     Window& window = of(handle);
     modifiers(window, mods);
     InputEvent e = event(window, InputEvent::Kind::Key);
-    if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) e.key = 'A' + (key - GLFW_KEY_A);
-    else if (key == GLFW_KEY_ESCAPE) e.key = kKeyEscape;
-    else if (key == GLFW_KEY_DELETE) e.key = kKeyDelete;
-    else return;
+    if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z)
+      e.key = 'A' + (key - GLFW_KEY_A);
+    else if (key == GLFW_KEY_ESCAPE)
+      e.key = kKeyEscape;
+    else if (key == GLFW_KEY_DELETE)
+      e.key = kKeyDelete;
+    else
+      return;
     window.events_.push_back(e);
   }
   static void drop(GLFWwindow* handle, int count, const char** paths) {

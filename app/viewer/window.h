@@ -2,9 +2,8 @@
 // (events.h); the frame loop decides what they do.
 #pragma once
 
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "events.h"
 

@@ -50,7 +50,8 @@ int check_two_views(const Image& image, int scene_x) {
   }
   const auto mesh_pixels = [&](int x0, int x1) {
     const long area = static_cast<long>(x1 - x0) * image.height;
-    return area - count(image, x0, x1, palette::kBackground) - count(image, x0, x1, palette::kDivider);
+    return area - count(image, x0, x1, palette::kBackground) -
+           count(image, x0, x1, palette::kDivider);
   };
   const long left = mesh_pixels(scene_x, divider);
   const long right = mesh_pixels(divider, image.width);

@@ -45,9 +45,11 @@ TEST(Camera, ZoomKeepsThePointUnderTheCursorInPlace) {
   const float distance_before = camera.distance();
   const glm::vec3 under = [&] {
     const glm::mat4 inverse = glm::inverse(camera.projection() * camera.view());
-    const glm::vec4 target_clip = camera.projection() * camera.view() * glm::vec4(camera.target(), 1.0f);
+    const glm::vec4 target_clip =
+        camera.projection() * camera.view() * glm::vec4(camera.target(), 1.0f);
     const float ndc_z = target_clip.z / target_clip.w;
-    const glm::vec4 p = inverse * glm::vec4(cursor.x / 400.0f - 1.0f, 1.0f - cursor.y / 300.0f, ndc_z, 1.0f);
+    const glm::vec4 p =
+        inverse * glm::vec4(cursor.x / 400.0f - 1.0f, 1.0f - cursor.y / 300.0f, ndc_z, 1.0f);
     return glm::vec3(p) / p.w;
   }();
   camera.zoom(3.0f, cursor);

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace holefill::viewer {
@@ -29,7 +28,9 @@ PickView view_from(glm::vec3 eye) {
   return view;
 }
 
-glm::vec2 screen(const PickView& view, glm::vec3 p) { return glm::vec2(*project_to_screen(view, p)); }
+glm::vec2 screen(const PickView& view, glm::vec3 p) {
+  return glm::vec2(*project_to_screen(view, p));
+}
 
 TEST(Picking, ProjectsTheLookAtPointToTheViewportCentreTopLeftOrigin) {
   PickView view = view_from({0, 0, 5});
@@ -39,7 +40,7 @@ TEST(Picking, ProjectsTheLookAtPointToTheViewportCentreTopLeftOrigin) {
   EXPECT_NEAR(centre->x, 500.0f, 1e-3f);
   EXPECT_NEAR(centre->y, 320.0f, 1e-3f);
   EXPECT_NEAR(centre->z, 5.0f, 1e-4f);
-  EXPECT_LT(screen(view, {0, 1, 0}).y, 320.0f);  // up in the world is up on the screen
+  EXPECT_LT(screen(view, {0, 1, 0}).y, 320.0f);       // up in the world is up on the screen
   EXPECT_FALSE(project_to_screen(view, {0, 0, 10}));  // behind the camera
 }
 
@@ -80,7 +81,8 @@ TEST(Picking, OverlappingLoopsGoToTheOneNearerTheCamera) {
 
 TEST(Picking, AClickInsideBeatsANearbyBoundaryOfAnotherLoop) {
   const PickView view = view_from({0, 0, 5});
-  const std::vector<PickLoop> loops = {circle(0, {-1.05f, 0, 0}, 1.0f), circle(1, {1.05f, 0, 0}, 1.0f)};
+  const std::vector<PickLoop> loops = {circle(0, {-1.05f, 0, 0}, 1.0f),
+                                       circle(1, {1.05f, 0, 0}, 1.0f)};
   // Just inside loop 1, a few pixels from loop 0's rim.
   const glm::vec2 gap = screen(view, {0.0f, 0.0f, 0.0f});
   EXPECT_EQ(pick_hole(loops, view, gap + glm::vec2(4.0f, 0.0f)), 1);
