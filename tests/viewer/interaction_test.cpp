@@ -1,0 +1,93 @@
+#include "interaction.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "scene_arrays.h"
+
+namespace holefill::viewer {
+namespace {
+
+const SceneArea kArea{{390.0f, 0.0f}, {890.0f, 800.0f}};
+
+InputEvent mouse(InputEvent::Kind kind, glm::vec2 cursor) {
+  InputEvent event;
+  event.kind = kind;
+  event.cursor = cursor;
+  return event;
+}
+
+struct Scene {
+  Session session;
+  Camera camera;
+  Interaction interaction;
+  Scene() {
+    EXPECT_TRUE(session.open(std::filesystem::path(HOLEFILL_TEST_ASSETS) / "bunny.obj"));
+    camera.set_viewport(kArea.size);
+    fit_mesh(camera, session);
+  }
+  void send(const InputEvent& event) {
+    interaction.handle(event, kArea, false, false, camera, session);
+  }
+  // Where the hole's boundary centroid appears in the window.
+  glm::vec2 on_screen(int hole_id) {
+    frame_hole(camera, session, hole_id);
+    glm::vec3 centre(0.0f);
+    const auto points = boundary_points(session.mesh(), session.holes()[hole_id]);
+    for (const auto& p : points) centre += p / static_cast<float>(points.size());
+    const PickView view{camera.projection() * camera.view(), kArea.origin, kArea.size};
+    return glm::vec2(*project_to_screen(view, centre));
+  }
+};
+
+TEST(Interaction, AClickOnAFramedHoleSelectsItAndHoverFollowsTheCursor) {
+  Scene scene;
+  const glm::vec2 hole = scene.on_screen(2);
+  scene.send(mouse(InputEvent::Kind::CursorMove, hole));
+  EXPECT_EQ(scene.interaction.hovered(), 2);
+  scene.send(mouse(InputEvent::Kind::ButtonDown, hole));
+  scene.send(mouse(InputEvent::Kind::ButtonUp, hole));
+  EXPECT_EQ(scene.session.selected(), 2);
+  scene.send(mouse(InputEvent::Kind::CursorMove, kArea.origin + glm::vec2(2.0f, 2.0f)));
+  EXPECT_EQ(scene.interaction.hovered(), -1);
+}
+
+TEST(Interaction, ADragOrbitsInsteadOfPicking) {
+  Scene scene;
+  const glm::vec2 hole = scene.on_screen(1);
+  const glm::vec3 eye = scene.camera.eye();
+  scene.send(mouse(InputEvent::Kind::ButtonDown, hole));
+  scene.send(mouse(InputEvent::Kind::CursorMove, hole + glm::vec2(60.0f, 0.0f)));
+  scene.send(mouse(InputEvent::Kind::ButtonUp, hole + glm::vec2(60.0f, 0.0f)));
+  EXPECT_EQ(scene.session.selected(), -1);
+  EXPECT_GT(glm::length(scene.camera.eye() - eye), 1e-3f);
+}
+
+TEST(Interaction, ClicksOnThePanelAreLeftToTheUi) {
+  Scene scene;
+  const glm::vec2 hole = scene.on_screen(0);
+  scene.interaction.handle(mouse(InputEvent::Kind::ButtonDown, hole), kArea, true, false,
+                           scene.camera, scene.session);
+  scene.interaction.handle(mouse(InputEvent::Kind::ButtonUp, hole), kArea, true, false,
+                           scene.camera, scene.session);
+  EXPECT_EQ(scene.session.selected(), -1);
+}
+
+TEST(Interaction, ControlZUndoesAndControlYRedoes) {
+  Scene scene;
+  scene.session.select(2);
+  ASSERT_TRUE(scene.session.step(Stage::Triangulated));
+  InputEvent key;
+  key.kind = InputEvent::Kind::Key;
+  key.key = 'Z';
+  key.control = true;
+  scene.send(key);
+  EXPECT_EQ(scene.session.fill(2).stage(), Stage::Original);
+  key.key = 'Y';
+  scene.send(key);
+  EXPECT_EQ(scene.session.fill(2).stage(), Stage::Triangulated);
+}
+
+}  // namespace
+}  // namespace holefill::viewer
