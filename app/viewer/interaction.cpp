@@ -55,13 +55,21 @@ bool Interaction::take_mesh_opened() {
   return opened;
 }
 
-void Interaction::handle(const InputEvent& event, const SceneArea& area, bool ui_wants_mouse,
+void Interaction::handle(const InputEvent& event, const SceneArea& scene, bool ui_wants_mouse,
                          bool ui_wants_keyboard, Camera& camera, Session& session) {
+  // The comparison shows the scene twice, side by side: the camera then works in the half
+  // under the cursor, and holes are picked in the list only (each half has its own mesh).
+  const bool comparing = session.compare() && session.selected() >= 0;
+  SceneArea area = scene;
+  if (comparing) {
+    area.size.x *= 0.5f;
+    if (event.cursor.x >= area.origin.x + area.size.x) area.origin.x += area.size.x;
+  }
   camera.set_viewport(area.size);
   const glm::vec2 local = event.cursor - area.origin;
   switch (event.kind) {
     case InputEvent::Kind::ButtonDown:
-      if (ui_wants_mouse || !area.contains(event.cursor)) return;
+      if (ui_wants_mouse || !scene.contains(event.cursor)) return;
       press_ = last_ = event.cursor;
       drag_ = event.button == MouseButton::Left && !event.shift ? Drag::Pending : Drag::Pan;
       break;
@@ -74,14 +82,14 @@ void Interaction::handle(const InputEvent& event, const SceneArea& area, bool ui
       if (drag_ == Drag::Pan) camera.pan(event.cursor - last_);
       last_ = event.cursor;
       if (drag_ == Drag::None) {
-        const bool over_scene = !ui_wants_mouse && area.contains(event.cursor);
+        const bool over_scene = !comparing && !ui_wants_mouse && area.contains(event.cursor);
         const auto hole =
             over_scene ? hole_under_cursor(session, camera, area, event.cursor) : std::nullopt;
         hovered_ = hole.value_or(-1);
       }
       break;
     case InputEvent::Kind::ButtonUp:
-      if (drag_ == Drag::Pending) {
+      if (drag_ == Drag::Pending && !comparing) {
         if (const auto hole = hole_under_cursor(session, camera, area, event.cursor)) {
           session.select(*hole);
         }
@@ -89,7 +97,7 @@ void Interaction::handle(const InputEvent& event, const SceneArea& area, bool ui
       drag_ = Drag::None;
       break;
     case InputEvent::Kind::Scroll:
-      if (!ui_wants_mouse && area.contains(event.cursor)) camera.zoom(event.scroll, local);
+      if (!ui_wants_mouse && scene.contains(event.cursor)) camera.zoom(event.scroll, local);
       break;
     case InputEvent::Kind::Key:
       if (ui_wants_keyboard) return;

@@ -111,12 +111,11 @@ int run(const hv::CommandLine& command, const char* executable) {
   std::chrono::steady_clock::time_point timer_start;
   for (int frame = 0; !window.should_close(); ++frame) {
     const hv::SceneArea area = scene_area(window);
+    camera.set_viewport(area.size);
     for (const auto& event : window.poll()) {
       interaction.handle(event, area, ImGui::GetIO().WantCaptureMouse,
                          ImGui::GetIO().WantCaptureKeyboard, camera, session);
     }
-    camera.set_viewport(area.size);
-
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();

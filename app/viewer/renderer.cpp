@@ -76,7 +76,9 @@ void Renderer::render(Session& session, const Camera& camera, const PixelRect& s
     draw_view(left_, half, left, framebuffer_height, display, session.selected(), -1);
     draw_view(right_, half, right, framebuffer_height, display, session.selected(), -1);
   } else {
-    draw_view(main_, camera, scene, framebuffer_height, display, session.selected(), hovered_hole);
+    Camera whole = camera;
+    whole.set_viewport({static_cast<float>(scene.width), static_cast<float>(scene.height)});
+    draw_view(main_, whole, scene, framebuffer_height, display, session.selected(), hovered_hole);
   }
   glViewport(0, 0, framebuffer_width, framebuffer_height);
 }

@@ -89,5 +89,19 @@ TEST(Interaction, ControlZUndoesAndControlYRedoes) {
   EXPECT_EQ(scene.session.fill(2).stage(), Stage::Triangulated);
 }
 
+TEST(Interaction, TheComparisonViewPicksInTheListOnly) {
+  Scene scene;
+  const glm::vec2 hole = scene.on_screen(2);
+  scene.session.select(0);
+  scene.session.set_compare(true);
+  scene.send(mouse(InputEvent::Kind::CursorMove, hole));
+  EXPECT_EQ(scene.interaction.hovered(), -1);
+  scene.send(mouse(InputEvent::Kind::ButtonDown, hole));
+  scene.send(mouse(InputEvent::Kind::ButtonUp, hole));
+  EXPECT_EQ(scene.session.selected(), 0);
+  // The camera works in the half under the cursor.
+  EXPECT_FLOAT_EQ(scene.camera.viewport().x, 0.5f * kArea.size.x);
+}
+
 }  // namespace
 }  // namespace holefill::viewer
