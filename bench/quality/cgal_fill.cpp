@@ -1,6 +1,7 @@
 #include "cgal_fill.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/fair.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -54,6 +55,22 @@ CgalFill cgal_fill(const PlainMesh& cut, const std::vector<std::array<int, 2>>& 
     result.mesh.faces.push_back(corners);
   }
   return result;
+}
+
+bool cgal_fair(PlainMesh& mesh, const std::vector<int>& vertices) {
+  SurfaceMesh surface;
+  for (const auto& p : mesh.points) surface.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
+  for (const auto& f : mesh.faces) {
+    surface.add_face(SurfaceVertex(f[0]), SurfaceVertex(f[1]), SurfaceVertex(f[2]));
+  }
+  std::vector<SurfaceVertex> movable;
+  for (const int v : vertices) movable.emplace_back(v);
+  if (!CGAL::Polygon_mesh_processing::fair(surface, movable)) return false;
+  for (const int v : vertices) {
+    const auto& p = surface.point(SurfaceVertex(v));
+    mesh.points[v] = {p.x(), p.y(), p.z()};
+  }
+  return true;
 }
 
 }  // namespace holefill::quality

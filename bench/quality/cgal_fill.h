@@ -33,4 +33,8 @@ struct CgalFill {
 // `cut` running along its hole like holefill's Hole::halfedges.
 CgalFill cgal_fill(const PlainMesh& cut, const std::vector<std::array<int, 2>>& hole_edges);
 
+// CGAL's fairing alone (Polygon_mesh_processing::fair, C1, its default weights) of the given
+// vertices of `mesh`, in place; false (positions unchanged) where CGAL reports failure.
+bool cgal_fair(PlainMesh& mesh, const std::vector<int>& vertices);
+
 }  // namespace holefill::quality

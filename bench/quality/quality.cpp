@@ -38,7 +38,9 @@ constexpr const char* kUsage = R"(usage: holefill-quality [options]
   --meshes a,b         sphere, ellipsoid, blob, torus, bunny (default: all)
   --weights a,b        maxmin, liepa, area (default: maxmin)
   --smooth a,b         umbrella, fair-cot-2, fair-uniform-2, fair-cot-3, fair-uniform-3,
-                       cgal, truth (default: all that are built)
+                       cgal (CGAL's whole hole filling), cgal-fair (our triangulation and
+                       refinement, CGAL's fairing), truth (the cut faces themselves)
+                       (default: all but cgal-fair)
   --cut R,R,...        one cut with a hole of each radius, in mean edge lengths; repeatable
                        (default: --cut 3,3,3 --cut 7)
   --seed N             seed for the hole centres (default 1)
@@ -100,10 +102,7 @@ std::optional<FillOptions> smoothing_options(const std::string& name) {
   if (name.rfind("fair-cot-", 0) == 0 || name.rfind("fair-uniform-", 0) == 0) {
     options.smooth.method = SmoothMethod::Fair;
     options.smooth.fair.cotangent_weights = name.rfind("fair-cot-", 0) == 0;
-    // fair-cot-2, or fair-cot-2x3 for three solves, each with the previous one's weights
-    const auto x = name.find('x', 9);
-    options.smooth.fair.order = name[(x == std::string::npos ? name.size() : x) - 1] - '0';
-    if (x != std::string::npos) options.smooth.fair.iterations = std::stoi(name.substr(x + 1));
+    options.smooth.fair.order = name.back() - '0';
     if (options.smooth.fair.order == 2 || options.smooth.fair.order == 3) return options;
   }
   return std::nullopt;
@@ -190,6 +189,32 @@ Mesh fill_with_cgal(const Mesh& cut, const std::vector<Hole>& loops,
   }
   return mesh;
 }
+
+// Our triangulation and refinement, then CGAL's fairing of the new vertices: tells whether a
+// difference to CGAL comes from the fairing or from the patch it starts from.
+bool fair_with_cgal(Mesh& mesh, const std::vector<FilledHole>& patches) {
+  PlainMesh plain;
+  for (const auto v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    plain.points.push_back({p[0], p[1], p[2]});
+  }
+  for (const auto f : mesh.faces()) {
+    auto fv = mesh.cfv_iter(f);
+    const int a = fv->idx(), b = (++fv)->idx(), c = (++fv)->idx();
+    plain.faces.push_back({a, b, c});
+  }
+  bool all = true;
+  for (const auto& patch : patches) {
+    std::vector<int> vertices;
+    for (const auto v : patch.new_vertices) vertices.push_back(v.idx());
+    all = cgal_fair(plain, vertices) && all;
+  }
+  for (const auto v : mesh.vertices()) {
+    const auto& p = plain.points[v.idx()];
+    mesh.set_point(v, Point(p[0], p[1], p[2]));
+  }
+  return all;
+}
 #endif
 
 int run(int argc, char** argv) {
@@ -237,6 +262,20 @@ int run(int argc, char** argv) {
   }
   std::vector<Method> methods;
   for (const auto& smoothing : smoothing_names) {
+    if (smoothing == "cgal-fair") {
+#ifndef HOLEFILL_QUALITY_WITH_CGAL
+      throw UsageError{"this build has no CGAL"};
+#endif
+      for (const auto& weight : weight_names) {
+        FillOptions options;
+        options.last_stage = Stage::Refined;
+        if (!parse_weight(weight, options.triangulate.weight)) {
+          throw UsageError{"unknown weight '" + weight + "'"};
+        }
+        methods.push_back({weight, smoothing, options});
+      }
+      continue;
+    }
     if (smoothing == "cgal" || smoothing == "truth") {
 #ifndef HOLEFILL_QUALITY_WITH_CGAL
       if (smoothing == "cgal") throw UsageError{"this build has no CGAL"};
@@ -292,6 +331,11 @@ int run(int argc, char** argv) {
           patches.push_back({fill.patch.boundary, fill.patch.faces, fill.patch.new_vertices});
         }
         std::string notes;
+#ifdef HOLEFILL_QUALITY_WITH_CGAL
+        if (method.smoothing == "cgal-fair" && !fair_with_cgal(mesh, patches)) {
+          notes += "CGAL fairing failed ";
+        }
+#endif
         if (failed) notes += std::to_string(failed) + " not filled ";
         if (fell_back) notes += std::to_string(fell_back) + " fell back to umbrella";
         print_row(shape.name, sizes, method.weight, method.smoothing, measure(mesh, patches, truth),

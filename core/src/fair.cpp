@@ -232,20 +232,8 @@ FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options
     result.problem = "no fixed vertices around the patch to continue";
     return result;
   }
-  std::vector<Point> original;
-  for (std::size_t i = 0; i < region.unknowns; ++i) {
-    original.push_back(mesh.point(region.vertices[i]));
-  }
-  for (int iteration = 0; iteration < std::max(options.iterations, 1); ++iteration) {
-    result.problem = solve(mesh, region, options, result);
-    if (!result.problem.empty()) {
-      for (std::size_t i = 0; i < region.unknowns; ++i) {
-        mesh.set_point(region.vertices[i], original[i]);
-      }
-      return result;
-    }
-  }
-  result.solved = true;
+  result.problem = solve(mesh, region, options, result);
+  result.solved = result.problem.empty();
   return result;
 }
 

@@ -4,12 +4,14 @@
 // positions of the patch's own vertices, with the boundary and k-1 rings of surrounding
 // vertices held fixed, using cotangent (or uniform) weights and Eigen's sparse solvers.
 //
-// The operator is Delta = M^-1 K: K the stiffness matrix (cotangent weights, each cotangent
-// clamped to the cotangent of 1 degree and each edge weight to >= 0; or weight 1 per edge), M the
-// mixed Voronoi area of Meyer et al. 2003 (or the valence, with uniform weights, so that Delta is
-// Liepa's umbrella operator). The system solved is the symmetric form K (M^-1 K)^(k-1) x = 0 on
-// the patch's rows, which is positive definite whenever every patch vertex is connected to the
-// fixed ones, so a sparse Cholesky factorisation (LDLT) solves it.
+// The operator is Delta = M^-1 K: K the stiffness matrix with cotangent weights (each cotangent
+// clamped to that of 1 degree, so slivers stay finite; negative edge weights kept, so a flat
+// patch stays exactly where it is) or weight 1 per edge; M the mixed Voronoi area of Meyer et
+// al. 2003 (or the valence, with uniform weights, so that Delta is Liepa's umbrella operator).
+// This is the discretisation CGAL's fair() uses by default, and gives the same positions on the
+// same patch. The system solved is the symmetric form K (M^-1 K)^(k-1) x = 0 on the patch's rows,
+// positive definite whenever every patch vertex is tied to the fixed ones, so a sparse Cholesky
+// factorisation (LDLT) solves it.
 #pragma once
 
 #include <cstddef>
@@ -23,7 +25,6 @@ namespace holefill {
 struct FairOptions {
   int order = 2;                  // 2: bi-Laplacian (C1), 3: tri-Laplacian (C2)
   bool cotangent_weights = true;  // false: uniform (umbrella) weights
-  int iterations = 1;             // solves, each with weights from the previous one's result
 };
 
 struct FairResult {
