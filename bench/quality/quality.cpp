@@ -36,7 +36,7 @@ constexpr const char* kUsage = R"(usage: holefill-quality [options]
 
   --assets DIR         where bunny_closed.obj is (default: the source tree's assets/)
   --meshes a,b         sphere, ellipsoid, blob, torus, bunny (default: all)
-  --weights a,b        maxmin, liepa, area (default: maxmin)
+  --weights a,b        maxmin, liepa, area (default: all three; the summaries show the first)
   --smooth a,b         umbrella, fair-cot-2, fair-uniform-2, fair-cot-3, fair-uniform-3,
                        cgal (CGAL's whole hole filling), cgal-fair (our triangulation and
                        refinement, CGAL's fairing), truth (the cut faces themselves)
@@ -121,22 +121,73 @@ std::string hole_sizes(const std::vector<Hole>& holes) {
   return text.str();
 }
 
-void print_header() {
+// One line of the results: a cut mesh filled one way, measured.
+struct Row {
+  std::string mesh, holes, weight, smoothing;
+  Quality quality;
+  std::string notes;
+};
+
+void print_table(const std::vector<Row>& rows) {
   std::cout << "| mesh | holes (boundary edges) | weight | smoothing | new V / F "
                "| mean dist % | max dist % | min∠ p5 ° | min∠ ° | valence 6 % | edge ratio "
                "| boundary dihedral mean ° | boundary dihedral max ° | max dihedral ° | notes |\n"
                "|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  for (const auto& row : rows) {
+    const Quality& q = row.quality;
+    std::cout << "| " << row.mesh << " | " << row.holes << " | " << row.weight << " | "
+              << row.smoothing << " | " << q.new_vertices << " / " << q.faces << " | "
+              << format(100.0 * q.mean_distance, 3) << " | " << format(100.0 * q.max_distance, 3)
+              << " | " << format(q.min_angle_p5, 1) << " | " << format(q.min_angle, 1) << " | "
+              << format(100.0 * q.valence6_share, 0) << " | " << format(q.edge_length_ratio, 2)
+              << " | " << format(q.mean_boundary_dihedral, 1) << " | "
+              << format(q.max_boundary_dihedral, 1) << " | " << format(q.max_dihedral, 1) << " | "
+              << row.notes << " |\n";
+  }
 }
 
-void print_row(const std::string& mesh, const std::string& holes, const std::string& weight,
-               const std::string& smoothing, const Quality& q, const std::string& notes) {
-  std::cout << "| " << mesh << " | " << holes << " | " << weight << " | " << smoothing << " | "
-            << q.new_vertices << " / " << q.faces << " | " << format(100.0 * q.mean_distance, 3)
-            << " | " << format(100.0 * q.max_distance, 3) << " | " << format(q.min_angle_p5, 1)
-            << " | " << format(q.min_angle, 1) << " | " << format(100.0 * q.valence6_share, 0)
-            << " | " << format(q.edge_length_ratio, 2) << " | "
-            << format(q.mean_boundary_dihedral, 1) << " | " << format(q.max_boundary_dihedral, 1)
-            << " | " << format(q.max_dihedral, 1) << " | " << notes << " |" << std::endl;
+// One measure side by side: a line per cut mesh, a column per way of filling (the first
+// weight's smoothings, then CGAL's), the best value of each line in bold.
+void print_pivot(const std::vector<Row>& rows, const std::string& weight, const std::string& title,
+                 double (*value)(const Quality&), bool lower_is_better, int decimals) {
+  std::vector<std::string> columns, cases;
+  for (const auto& row : rows) {
+    const bool ours = row.weight == weight, cgal = row.weight == "CGAL";
+    if ((ours || cgal) &&
+        std::find(columns.begin(), columns.end(), row.smoothing) == columns.end()) {
+      columns.push_back(row.smoothing);
+    }
+    const std::string label = row.mesh + " " + row.holes;
+    if (std::find(cases.begin(), cases.end(), label) == cases.end()) cases.push_back(label);
+  }
+  std::cout << "**" << title << "** (triangulation weight " << weight << ")\n\n| mesh, holes |";
+  for (const auto& column : columns) std::cout << " " << column << " |";
+  std::cout << "\n|---|";
+  for (std::size_t i = 0; i < columns.size(); ++i) std::cout << "---:|";
+  std::cout << "\n";
+  for (const auto& label : cases) {
+    std::vector<double> values(columns.size(), std::nan(""));
+    for (const auto& row : rows) {
+      if (row.mesh + " " + row.holes != label || (row.weight != weight && row.weight != "CGAL")) {
+        continue;
+      }
+      const auto at = std::find(columns.begin(), columns.end(), row.smoothing) - columns.begin();
+      values[at] = value(row.quality);
+    }
+    double best = lower_is_better ? INFINITY : -INFINITY;
+    for (const double v : values) {
+      if (!std::isnan(v)) best = lower_is_better ? std::min(best, v) : std::max(best, v);
+    }
+    // Bold every value that prints like the best one: ties at the printed precision.
+    const std::string best_text = format(best, decimals);
+    std::cout << "| " << label << " |";
+    for (const double v : values) {
+      const std::string text = format(v, decimals);
+      std::cout << " " << (text == best_text ? "**" + text + "**" : text) << " |";
+    }
+    std::cout << "\n";
+  }
+  std::cout << "\n";
 }
 
 // The truth's own measures: the removed faces in the closed mesh, as if they were the patch.
@@ -219,7 +270,7 @@ bool fair_with_cgal(Mesh& mesh, const std::vector<FilledHole>& patches) {
 
 int run(int argc, char** argv) {
   std::filesystem::path assets = HOLEFILL_QUALITY_ASSETS_DIR;
-  std::vector<std::string> mesh_names, weight_names{"maxmin"}, smoothing_names;
+  std::vector<std::string> mesh_names, weight_names{"maxmin", "liepa", "area"}, smoothing_names;
   std::vector<std::vector<double>> cuts;
   unsigned seed = 1;
   std::optional<std::filesystem::path> write_dir;
@@ -297,7 +348,7 @@ int run(int argc, char** argv) {
   };
   if (write_dir) std::filesystem::create_directories(*write_dir);
 
-  print_header();
+  std::vector<Row> rows;
   for (const auto& shape : shapes(assets)) {
     if (!mesh_names.empty() &&
         std::find(mesh_names.begin(), mesh_names.end(), shape.name) == mesh_names.end()) {
@@ -338,8 +389,8 @@ int run(int argc, char** argv) {
 #endif
         if (failed) notes += std::to_string(failed) + " not filled ";
         if (fell_back) notes += std::to_string(fell_back) + " fell back to umbrella";
-        print_row(shape.name, sizes, method.weight, method.smoothing, measure(mesh, patches, truth),
-                  notes);
+        rows.push_back({shape.name, sizes, method.weight, method.smoothing,
+                        measure(mesh, patches, truth), notes});
         write(mesh, method.weight + "-" + method.smoothing);
       }
 #ifdef HOLEFILL_QUALITY_WITH_CGAL
@@ -347,17 +398,31 @@ int run(int argc, char** argv) {
         std::size_t unfaired = 0;
         std::vector<FilledHole> patches;
         const Mesh filled = fill_with_cgal(cut->mesh, loops, patches, unfaired);
-        print_row(shape.name, sizes, "CGAL", "CGAL", measure(filled, patches, truth),
-                  unfaired ? std::to_string(unfaired) + " not faired" : "");
+        rows.push_back({shape.name, sizes, "CGAL", "CGAL", measure(filled, patches, truth),
+                        unfaired ? std::to_string(unfaired) + " not faired" : ""});
         write(filled, "cgal");
       }
 #endif
       if (wanted("truth")) {
-        print_row(shape.name, sizes, "–", "truth (cut faces)",
-                  measure(closed, truth_patches(closed, *cut, loops), truth), "");
+        rows.push_back({shape.name, sizes, "–", "truth (cut faces)",
+                        measure(closed, truth_patches(closed, *cut, loops), truth), ""});
       }
     }
   }
+  const std::string& first_weight = weight_names.front();
+  for (const auto& weight : weight_names) {
+    print_pivot(
+        rows, weight, "Mean distance to the truth, % of the bounding-box diagonal",
+        [](const Quality& q) { return 100.0 * q.mean_distance; }, true, 3);
+  }
+  print_pivot(
+      rows, first_weight, "5th percentile of the triangles' smallest angle, degrees",
+      [](const Quality& q) { return q.min_angle_p5; }, false, 1);
+  print_pivot(
+      rows, first_weight, "Largest dihedral angle across the hole's boundary, degrees",
+      [](const Quality& q) { return q.max_boundary_dihedral; }, true, 1);
+  std::cout << "**Every measure**\n\n";
+  print_table(rows);
   return 0;
 }
 
