@@ -40,7 +40,7 @@ constexpr const char* kUsage = R"(usage: holefill-quality [options]
   --smooth a,b         umbrella, fair-cot-2, fair-uniform-2, fair-cot-3, fair-uniform-3,
                        cgal (CGAL's whole hole filling), cgal-fair (our triangulation and
                        refinement, CGAL's fairing), truth (the cut faces themselves)
-                       (default: all but cgal-fair)
+                       (default: all that this build has)
   --cut R,R,...        one cut with a hole of each radius, in mean edge lengths; repeatable
                        (default: --cut 3,3,3 --cut 7)
   --seed N             seed for the hole centres (default 1)
@@ -307,6 +307,7 @@ int run(int argc, char** argv) {
   if (smoothing_names.empty()) {
     smoothing_names = {"umbrella", "fair-cot-2", "fair-uniform-2", "fair-cot-3", "fair-uniform-3"};
 #ifdef HOLEFILL_QUALITY_WITH_CGAL
+    smoothing_names.push_back("cgal-fair");
     smoothing_names.push_back("cgal");
 #endif
     smoothing_names.push_back("truth");
