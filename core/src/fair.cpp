@@ -2,7 +2,6 @@
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
-#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 #include <vector>
@@ -53,8 +52,8 @@ Region gather_region(const Mesh& mesh, const std::vector<VertexHandle>& new_vert
   return region;
 }
 
-// Cotangent of the angle at `corner` in the triangle (corner, a, b), clamped; 0 when two of the
-// points coincide (the angle is undefined, so the triangle contributes nothing).
+// Cotangent of the angle at `corner` in the triangle (corner, a, b), clamped; 0 when the corner
+// coincides with a or b (the angle is undefined, so it contributes nothing).
 double clamped_cotangent(const Point& corner, const Point& a, const Point& b) {
   const Point u = a - corner, v = b - corner;
   const double sine = OpenMesh::cross(u, v).norm(), cosine = OpenMesh::dot(u, v);
