@@ -71,12 +71,13 @@ double half_cotangent_opposite(const Mesh& mesh, HalfedgeHandle h) {
                                  mesh.point(mesh.to_vertex_handle(h)));
 }
 
-// The edge's cotangent weight (cot alpha + cot beta) / 2, clamped to >= 0 so that the stiffness
-// matrix stays an M-matrix; on a locally Delaunay edge (all refined patch edges) it already is.
+// The edge's cotangent weight (cot alpha + cot beta) / 2. It is negative on an edge that is not
+// locally Delaunay and is kept so: clamping it to 0 would lose linear precision (a flat patch
+// would slide within its plane), and K stays positive semi-definite without it, being the
+// finite-element stiffness matrix of the piecewise-linear surface.
 double cotangent_weight(const Mesh& mesh, HalfedgeHandle h) {
-  const double weight = half_cotangent_opposite(mesh, h) +
-                        half_cotangent_opposite(mesh, mesh.opposite_halfedge_handle(h));
-  return weight;
+  return half_cotangent_opposite(mesh, h) +
+         half_cotangent_opposite(mesh, mesh.opposite_halfedge_handle(h));
 }
 
 // The mixed Voronoi area of vertex p in triangle (p, q, r) (Meyer, Desbrun, Schroeder & Barr
@@ -154,8 +155,8 @@ Operator build_operator(const Mesh& mesh, const Region& region, const FairOption
   return op;
 }
 
-// One solve of the linear system on the mesh's current geometry; on success writes the
-// unknowns' new positions into the mesh. Returns the problem otherwise, the mesh unchanged.
+// Builds the operator on the mesh's current geometry and solves; on success writes the unknowns'
+// new positions into the mesh. Returns the problem otherwise, the mesh unchanged.
 std::string solve(Mesh& mesh, const Region& region, const FairOptions& options,
                   FairResult& result) {
   const int n = static_cast<int>(region.vertices.size());
