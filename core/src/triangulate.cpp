@@ -37,6 +37,24 @@ class TriangularTable {
   std::vector<T> cells_;
 };
 
+// The same cells stored column by column: column k holds i = 0 ... k-1. The inner loop over apexes
+// m reads (i, m) along a row and (m, k) down a column; a column copy keeps both reads sequential.
+template <class T>
+class ColumnTable {
+ public:
+  explicit ColumnTable(int n)
+      : cells_(static_cast<std::size_t>(n) * static_cast<std::size_t>(n - 1) / 2) {}
+  T& operator()(int i, int k) { return cells_[index(i, k)]; }
+  const T& operator()(int i, int k) const { return cells_[index(i, k)]; }
+
+ private:
+  static std::size_t index(int i, int k) {
+    const std::size_t column = static_cast<std::size_t>(k);
+    return column * (column - 1) / 2 + static_cast<std::size_t>(i);
+  }
+  std::vector<T> cells_;
+};
+
 // The dynamic program. Candidates are skipped as soon as they cannot beat the cell's best: adding
 // a triangle only makes every component of a weight worse (more degenerate triangles, a smaller
 // smallest angle, a larger dihedral angle, a larger area), so a partial value that does not beat
@@ -55,9 +73,15 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
   for (const auto& [i, k] : polygon.forbidden_chords) {
     forbidden(std::min(i, k), std::max(i, k)) = 1;
   }
+  struct ColumnCell {
+    Value value;
+    std::uint16_t apex;
+  };
+  ColumnTable<ColumnCell> by_column(n);
   for (int i = 0; i + 1 < n; ++i) {
     values(i, i + 1) = Weight::identity();
     apex(i, i + 1) = 0;
+    by_column(i, i + 1) = {Weight::identity(), 0};
   }
 
   // Normal of the triangle chosen for sub-polygon (a, b), or of the mesh face across (a, b).
@@ -75,19 +99,30 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
       const bool closing_edge = (i == 0 && k == n - 1);
       std::uint16_t& best_apex = apex(i, k);
       best_apex = kNone;
-      if (forbidden(i, k) && !closing_edge) continue;
+      if (forbidden(i, k) && !closing_edge) {
+        by_column(i, k) = {Value{}, kNone};
+        continue;
+      }
       Value& best = values(i, k);
-      for (int m = i + 1; m < k; ++m) {
-        if (apex(i, m) == kNone || apex(m, k) == kNone) continue;
+      // Evaluates apex m and keeps it if it beats the best so far (ties keep the smaller m).
+      auto consider = [&](int m) {
+        const ColumnCell& right = by_column(m, k);
+        if (apex(i, m) == kNone || right.apex == kNone) return;
         const bool have_best = best_apex != kNone;
-        Value value = Weight::combine(values(i, m), values(m, k));
-        if (prune && have_best && !weight.less(value, best)) continue;
+        Value value = Weight::combine(values(i, m), right.value);
+        if (prune && have_best && !weight.less(value, best)) return;
+        if (prune && have_best) {
+          // The triangle's area costs one cross product; at its best (no defect, no angle
+          // or dihedral penalty) does the candidate still beat the best?
+          TriangleMeasures optimistic;
+          optimistic.area = 0.5 * OpenMesh::cross(p[m] - p[i], p[k] - p[i]).norm();
+          optimistic.min_angle = M_PI;
+          if (!weight.less(Weight::combine(value, weight.of(optimistic)), best)) return;
+        }
         TriangleMeasures measures = measure_triangle(p[i], p[m], p[k], Weight::kUsesMinAngle);
         if constexpr (Weight::kUsesDihedral) {
-          if (prune && have_best &&
-              !weight.less(Weight::combine(value, weight.of(measures)), best)) {
-            continue;
-          }
+          if (prune && have_best && !weight.less(Weight::combine(value, weight.of(measures)), best))
+            return;
           const Point normal = unit_normal(p[i], p[m], p[k]);
           double worst = std::max(dihedral(normal, neighbour_normal(i, m)),
                                   dihedral(normal, neighbour_normal(m, k)));
@@ -101,7 +136,9 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
           best = value;
           best_apex = static_cast<std::uint16_t>(m);
         }
-      }
+      };
+      for (int m = i + 1; m < k; ++m) consider(m);
+      by_column(i, k) = {best, best_apex};
     }
   }
   if (apex(0, n - 1) == kNone) return std::nullopt;
