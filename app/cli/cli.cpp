@@ -42,8 +42,8 @@ constexpr const char* kFillHelp = R"(usage: holefill fill MESH -o OUT [options]
 
   -o, --output OUT            where to write the result (.obj .off .ply); written atomically
   --weight maxmin|liepa|area  triangulation weight (default maxmin, the paper's)
-  --fold-limit DEG            maxmin: triangles folded over a neighbour by more than DEG
-                              count as defects (default 90; 180 = the paper's exact order)
+  --fold-limit DEG            maxmin: a dihedral angle above DEG is minimised before the
+                              smallest angle is maximised (default 90; 180 = the paper's order)
   --tau T                     refinement density factor, > 0 (default 1.41421, sqrt 2)
   --smooth umbrella|fair      umbrella smoothing (the paper's, default) or fairing that
                               continues the surrounding curvature

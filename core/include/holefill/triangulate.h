@@ -32,8 +32,8 @@ struct HolePolygon {
 struct TriangulateOptions {
   WeightKind weight = WeightKind::MaxMin;
   double angle_tolerance = kDefaultAngleTolerance;
-  // maxmin: a triangle folded over a neighbour by more than this (radians) counts as a defect,
-  // like a degenerate one; pi gives the paper's order exactly (see weights.h).
+  // maxmin: a largest dihedral angle beyond this (radians) is minimised before the smallest
+  // angle is maximised; pi gives the paper's order exactly (see weights.h).
   double fold_limit = kDefaultFoldLimit;
   // Skip candidates that cannot beat a cell's best (same result, much faster); false runs the
   // plain O(n^3) loop, kept as the reference the fast path is tested against.

@@ -6,9 +6,10 @@
 //          a larger smallest angle is better, then a smaller dihedral, then a smaller area.
 // Every weight puts the number of degenerate (zero-area) triangles first, so that a degenerate
 // candidate is the worst choice under any weight, never a NaN and never a "free" zero area.
-// maxmin also counts there the triangles folded over a neighbour (dihedral angle beyond a limit,
-// 90 degrees by default): the smallest angle alone happily folds a patch on a curved hole, so
-// any fold-free triangulation wins; a limit of pi reproduces the paper's order exactly.
+// maxmin then compares how far the largest dihedral angle exceeds a fold limit (90 degrees by
+// default): the smallest angle alone happily folds a patch over itself on a curved hole, so a
+// triangulation that stays under the limit always wins, and among those that cannot the one
+// folding least. Under the limit the paper's order decides; a limit of pi reproduces it exactly.
 #pragma once
 
 #include <algorithm>
@@ -86,15 +87,14 @@ struct MaxMinWeight {
   double angle_tolerance = kDefaultAngleTolerance;
   double fold_limit = kDefaultFoldLimit;
   struct Value {
-    int degenerate = 0;  // degenerate or folded triangles
+    int degenerate = 0;
     double min_angle = std::numeric_limits<double>::infinity();
     double max_dihedral = 0.0;
     double area = 0.0;
   };
   static Value identity() { return {}; }
-  Value of(const TriangleMeasures& t) const {
-    const bool defect = t.degenerate || t.max_dihedral > fold_limit;
-    return {defect ? 1 : 0, t.min_angle, t.max_dihedral, t.area};
+  static Value of(const TriangleMeasures& t) {
+    return {t.degenerate ? 1 : 0, t.min_angle, t.max_dihedral, t.area};
   }
   static Value combine(const Value& a, const Value& b) {
     return {a.degenerate + b.degenerate, std::min(a.min_angle, b.min_angle),
@@ -102,6 +102,9 @@ struct MaxMinWeight {
   }
   bool less(const Value& a, const Value& b) const {
     if (a.degenerate != b.degenerate) return a.degenerate < b.degenerate;
+    const double fold_a = std::max(0.0, a.max_dihedral - fold_limit);
+    const double fold_b = std::max(0.0, b.max_dihedral - fold_limit);
+    if (std::abs(fold_a - fold_b) > angle_tolerance) return fold_a < fold_b;
     if (std::abs(a.min_angle - b.min_angle) > angle_tolerance) return a.min_angle > b.min_angle;
     if (std::abs(a.max_dihedral - b.max_dihedral) > angle_tolerance) {
       return a.max_dihedral < b.max_dihedral;
