@@ -4,19 +4,16 @@
 #include <cstdint>
 #include <map>
 
+#include "dp_step.h"
+
 namespace holefill {
 namespace {
 
 // A triangle is degenerate when its smallest angle's sine is below this (about 1e-10 rad).
 constexpr double kDegenerateSine = 1e-10;
 
-Point unit_normal(const Point& a, const Point& b, const Point& c) {
-  Point n = OpenMesh::cross(b - a, c - a);
-  const double length = n.norm();
-  return length > 0.0 ? n / length : Point(0.0, 0.0, 0.0);
-}
-
-bool is_zero(const Point& p) { return p[0] == 0.0 && p[1] == 0.0 && p[2] == 0.0; }
+using detail::is_zero;
+using detail::unit_normal;
 
 // Triangular storage for the cells (i, k), 0 <= i < k < n: row i holds k = i+1 ... n-1.
 template <class T>
@@ -85,75 +82,36 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
   }
 
   // Normal of the triangle chosen for sub-polygon (a, b), or of the mesh face across (a, b).
-  auto neighbour_normal = [&](int a, int b) -> Point {
+  auto normal_across = [&](int a, int b) -> Point {
     if (b == a + 1) return polygon.outside_normals[a];
     return unit_normal(p[a], p[apex(a, b)], p[b]);
-  };
-  auto dihedral = [](const Point& normal, const Point& other) {
-    return is_zero(other) ? 0.0 : angle_between_normals(normal, other);
   };
 
   // Rows from the bottom up: cell (i, k) needs (i, m) from its own row and (m, k) from below.
   for (int i = n - 3; i >= 0; --i) {
     for (int k = i + 2; k < n; ++k) {
       const bool closing_edge = (i == 0 && k == n - 1);
-      std::uint16_t& best_apex = apex(i, k);
-      best_apex = kNone;
       if (forbidden(i, k) && !closing_edge) {
+        apex(i, k) = kNone;
         by_column(i, k) = {Value{}, kNone};
         continue;
       }
       Value& best = values(i, k);
-      // Evaluates apex m and keeps it if it beats the best so far (ties keep the smaller m).
-      auto consider = [&](int m) {
+      int best_apex = -1;
+      for (int m = i + 1; m < k; ++m) {
         const ColumnCell& right = by_column(m, k);
-        if (apex(i, m) == kNone || right.apex == kNone) return;
-        const bool have_best = best_apex != kNone;
-        Value value = Weight::combine(values(i, m), right.value);
-        if (prune && have_best && !weight.less(value, best)) return;
-        if (prune && have_best) {
-          // The triangle's area costs one cross product; at its best (no defect, no angle
-          // or dihedral penalty) does the candidate still beat the best?
-          TriangleMeasures optimistic;
-          optimistic.area = 0.5 * OpenMesh::cross(p[m] - p[i], p[k] - p[i]).norm();
-          optimistic.min_angle = M_PI;
-          if (!weight.less(Weight::combine(value, weight.of(optimistic)), best)) return;
-        }
-        TriangleMeasures measures = measure_triangle(p[i], p[m], p[k], Weight::kUsesMinAngle);
-        if constexpr (Weight::kUsesDihedral) {
-          if (prune && have_best && !weight.less(Weight::combine(value, weight.of(measures)), best))
-            return;
-          const Point normal = unit_normal(p[i], p[m], p[k]);
-          double worst = std::max(dihedral(normal, neighbour_normal(i, m)),
-                                  dihedral(normal, neighbour_normal(m, k)));
-          if (closing_edge) {
-            worst = std::max(worst, dihedral(normal, polygon.outside_normals[n - 1]));
-          }
-          measures.max_dihedral = worst;
-        }
-        value = Weight::combine(value, weight.of(measures));
-        if (!have_best || weight.less(value, best)) {
-          best = value;
-          best_apex = static_cast<std::uint16_t>(m);
-        }
-      };
-      for (int m = i + 1; m < k; ++m) consider(m);
-      by_column(i, k) = {best, best_apex};
+        if (apex(i, m) == kNone || right.apex == kNone) continue;
+        detail::try_apex(weight, polygon, i, m, k, values(i, m), right.value, normal_across, prune,
+                         best, best_apex);
+      }
+      apex(i, k) = best_apex < 0 ? kNone : static_cast<std::uint16_t>(best_apex);
+      by_column(i, k) = {best, apex(i, k)};
     }
   }
   if (apex(0, n - 1) == kNone) return std::nullopt;
 
   PolygonTriangulation result;
-  std::vector<std::pair<int, int>> pending{{0, n - 1}};
-  while (!pending.empty()) {
-    const auto [i, k] = pending.back();
-    pending.pop_back();
-    if (k - i < 2) continue;
-    const int m = apex(i, k);
-    result.triangles.push_back({i, m, k});
-    pending.emplace_back(i, m);
-    pending.emplace_back(m, k);
-  }
+  result.triangles = detail::trace_triangles(n, [&](int i, int k) { return apex(i, k); });
   result.quality = evaluate_triangulation(polygon, result.triangles);
   return result;
 }
