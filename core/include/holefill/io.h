@@ -1,6 +1,10 @@
-// Reading and writing meshes. OBJ goes through tinyobjloader (positions welded by index,
-// polygons triangulated); OFF, PLY and STL through OpenMesh's readers. Every failure throws a
-// FileError naming the file and the reason; writes are atomic (temporary file, then rename).
+// Reading and writing meshes. OBJ, OFF, PLY (ASCII and binary) and STL (ASCII and binary) are
+// read by our own parsers, in double precision, into a list of polygons that is then checked and
+// repaired before it becomes a mesh: polygons are triangulated, faces flipped to agree with
+// their neighbours, exact duplicates and faces using a vertex twice dropped, and faces that would
+// make an edge or vertex non-manifold kept on their own copies of their corners. Every repair is
+// counted in a LoadReport; every refusal throws a FileError naming the file and the reason.
+// Writes are atomic (temporary file, then rename).
 #pragma once
 
 #include <filesystem>
@@ -14,13 +18,26 @@ namespace holefill {
 // What loading had to change or noticed, for the user to read.
 struct LoadReport {
   std::size_t polygons_triangulated = 0;     // faces with more than 3 corners
-  std::size_t degenerate_faces_dropped = 0;  // faces using a vertex twice
+  std::size_t degenerate_faces_dropped = 0;  // faces using a vertex twice, or with < 3 corners
   std::size_t faces_detached = 0;  // faces that would make an edge non-manifold, given own vertices
-  std::vector<std::string> warnings;
+  std::size_t faces_flipped = 0;   // turned over to agree with the orientation of their neighbours
+  std::size_t duplicate_faces_dropped = 0;  // the same corners in the same order as a kept face
+  std::size_t duplicate_positions = 0;      // vertices at exactly the position of an earlier vertex
+  std::size_t isolated_vertices = 0;        // vertices no face uses (kept)
+  std::size_t elements_ignored = 0;         // OBJ lines, points and curves: not surfaces
+  std::string format;                       // what the contents were read as: obj, off, ply or stl
+  std::vector<std::string> warnings;        // one sentence per kind of repair or oddity
 };
 
-// Loads a triangle mesh; the format is chosen by the file extension (obj, off, ply, stl).
+// Loads a triangle mesh. The format is chosen by the file's contents where they are
+// unmistakable (a PLY or OFF header, a binary STL's size) and by its extension otherwise; a
+// file whose extension says otherwise is read by its contents, with a warning.
 Mesh load_mesh(const std::filesystem::path& path, LoadReport* report = nullptr);
+
+// Reads a mesh from bytes already in memory; `name` stands in for the path in errors and
+// chooses the format like a file name's extension. load_mesh is this on the file's contents.
+Mesh load_mesh_from_memory(const std::string& bytes, const std::filesystem::path& name,
+                           LoadReport* report = nullptr);
 
 // Writes OBJ, OFF or PLY (by extension) with full double precision. Either the whole file
 // appears at `path` or nothing changes there.
