@@ -201,6 +201,11 @@ TriangulationQuality evaluate_triangulation(const HolePolygon& polygon,
 std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polygon,
                                                         const TriangulateOptions& options) {
   if (polygon.points.size() < 3 || polygon.points.size() >= kMaxPolygonSize) return std::nullopt;
+  const std::size_t threshold = options.restricted.above_edges;
+  if (threshold > 0 && polygon.points.size() > threshold) {
+    if (auto restricted = triangulate_polygon_restricted(polygon, options)) return restricted;
+  }
+  if (polygon.points.size() > kMaxFullSearchEdges) return std::nullopt;
   switch (options.weight) {
     case WeightKind::MaxMin:
       return solve(polygon, MaxMinWeight{options.angle_tolerance, options.fold_limit},

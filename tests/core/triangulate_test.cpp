@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
 #include <set>
 
@@ -191,6 +192,87 @@ TEST(Triangulate, PrunedSearchGivesTheSameTriangulationAsThePlainLoop) {
       if (!a) continue;
       EXPECT_EQ(a->triangles, b->triangles) << to_string(weight) << ", n = " << n;
     }
+  }
+}
+
+// A triangulation of polygon 0..n-1: n-2 triangles, each polygon edge in exactly one of them,
+// each chord in exactly two, all oriented like the polygon.
+bool is_polygon_triangulation(int n, const Triangles& triangles) {
+  if (static_cast<int>(triangles.size()) != n - 2) return false;
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& t : triangles) {
+    if (!(t[0] < t[1] && t[1] < t[2])) return false;
+    for (int e = 0; e < 3; ++e) ++directed[{t[e], t[(e + 1) % 3]}];
+  }
+  for (const auto& [edge, count] : directed) {
+    const auto [a, b] = edge;
+    const bool polygon_edge = (b == a + 1) || (a == n - 1 && b == 0);
+    const int reverse = directed.count({b, a}) ? directed.at({b, a}) : 0;
+    if (count != 1 || (polygon_edge ? reverse != 0 : reverse != 1)) return false;
+  }
+  return true;
+}
+
+TEST(RestrictedSearch, GivesAValidTriangulationUpToThousandsOfEdges) {
+  for (const int n : {7, 50, 301, 2500}) {
+    std::mt19937 rng(n);
+    HolePolygon polygon = random_hole(n, rng);
+    for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}) {
+      const auto result = triangulate_polygon_restricted(polygon, {weight});
+      ASSERT_TRUE(result) << n;
+      EXPECT_TRUE(is_polygon_triangulation(n, result->triangles)) << n << " " << to_string(weight);
+      EXPECT_EQ(result->quality.degenerate, 0);
+    }
+  }
+}
+
+// The restricted search explores a subset of the triangulations, and the area and the smallest
+// angle are exact optima of the full search: it can never beat the full search on those.
+TEST(RestrictedSearch, NeverBeatsTheFullSearchOnItsExactComponents) {
+  std::mt19937 rng(29);
+  for (int trial = 0; trial < 12; ++trial) {
+    const int n = 60 + 20 * trial;
+    const HolePolygon polygon = random_hole(n, rng);
+    TriangulateOptions area{WeightKind::Area}, maxmin{WeightKind::MaxMin, 0.0, M_PI};
+    area.restricted.above_edges = maxmin.restricted.above_edges = 0;
+    const auto full_area = triangulate_polygon(polygon, area);
+    const auto restricted_area = triangulate_polygon_restricted(polygon, area);
+    const auto full_maxmin = triangulate_polygon(polygon, maxmin);
+    const auto restricted_maxmin = triangulate_polygon_restricted(polygon, maxmin);
+    ASSERT_TRUE(full_area && restricted_area && full_maxmin && restricted_maxmin);
+    EXPECT_LE(full_area->quality.area, restricted_area->quality.area * (1.0 + 1e-12));
+    EXPECT_GE(full_maxmin->quality.min_angle, restricted_maxmin->quality.min_angle - 1e-12);
+  }
+}
+
+TEST(RestrictedSearch, LargeHolesUseItAndSmallOnesDoNot) {
+  std::mt19937 rng(31);
+  const HolePolygon polygon = random_hole(120, rng);
+  TriangulateOptions options{WeightKind::Liepa};
+  options.restricted.above_edges = 100;  // 120 edges: restricted
+  const auto through_threshold = triangulate_polygon(polygon, options);
+  const auto restricted = triangulate_polygon_restricted(polygon, options);
+  ASSERT_TRUE(through_threshold && restricted);
+  EXPECT_EQ(through_threshold->triangles, restricted->triangles);
+  options.restricted.above_edges = 0;  // never
+  options.prune = false;
+  const auto full = triangulate_polygon(polygon, options);
+  options.prune = true;
+  EXPECT_EQ(triangulate_polygon(polygon, options)->triangles, full->triangles);
+}
+
+TEST(RestrictedSearch, RespectsForbiddenChords) {
+  std::mt19937 rng(37);
+  const int n = 400;
+  HolePolygon polygon = random_hole(n, rng);
+  polygon.forbidden_chords = random_forbidden_chords(n, rng);
+  const std::set<std::pair<int, int>> forbidden(polygon.forbidden_chords.begin(),
+                                                polygon.forbidden_chords.end());
+  const auto result = triangulate_polygon_restricted(polygon, {WeightKind::MaxMin});
+  if (!result) GTEST_SKIP() << "no allowed triangulation; the caller falls back to the full search";
+  for (const auto& t : result->triangles) {
+    EXPECT_FALSE(forbidden.count({t[0], t[1]}) || forbidden.count({t[1], t[2]}) ||
+                 forbidden.count({t[0], t[2]}));
   }
 }
 

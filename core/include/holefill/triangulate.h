@@ -29,6 +29,15 @@ struct HolePolygon {
   std::vector<std::pair<int, int>> forbidden_chords;
 };
 
+// The restricted search for large holes (triangulate_restricted.cpp): chords inside pockets of
+// consecutive boundary vertices, between anchors every pocket_edges/2 vertices, and to each
+// vertex's nearest neighbours in space.
+struct RestrictedSearch {
+  std::size_t above_edges = 600;  // holes with more boundary edges use it; 0: never
+  int pocket_edges = 48;
+  int nearest_neighbours = 16;
+};
+
 struct TriangulateOptions {
   WeightKind weight = WeightKind::MaxMin;
   double angle_tolerance = kDefaultAngleTolerance;
@@ -38,10 +47,14 @@ struct TriangulateOptions {
   // Skip candidates that cannot beat a cell's best (same result, much faster); false runs the
   // plain O(n^3) loop, kept as the reference the fast path is tested against.
   bool prune = true;
+  RestrictedSearch restricted{};
 };
 
 // The dynamic program stores apexes in 16 bits: holes must have fewer boundary edges than this.
 inline constexpr std::size_t kMaxPolygonSize = 0xFFFF;
+// The full search needs about 75 bytes per (i, k) cell (n^2 / 2 cells): above this many edges
+// (340 MB) only the restricted search runs.
+inline constexpr std::size_t kMaxFullSearchEdges = 3000;
 
 // The weight's components for a whole triangulation, whatever the weight: the quantities the
 // paper's weights order, computed over all of the triangulation's triangles.
@@ -60,8 +73,16 @@ struct PolygonTriangulation {
 
 // The optimal triangulation under options.weight, or nothing when the forbidden chords leave no
 // valid triangulation. The polygon needs at least 3 and fewer than kMaxPolygonSize points.
+// Polygons above options.restricted.above_edges go through the restricted search first (see
+// RestrictedSearch), and through the full one only when it finds nothing and the polygon has at
+// most kMaxFullSearchEdges points.
 std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polygon,
                                                         const TriangulateOptions& options);
+
+// The restricted search alone (whatever the hole's size); nothing when the allowed chords hold no
+// valid triangulation.
+std::optional<PolygonTriangulation> triangulate_polygon_restricted(
+    const HolePolygon& polygon, const TriangulateOptions& options);
 
 // The measures of triangle (a, b, c) that the weights use, except its dihedral angle (and its
 // smallest angle, left 0, when with_min_angle is false: only maxmin needs the atan2).
