@@ -1,9 +1,15 @@
 #include "holefill/fill.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
+#include <cmath>
+#include <cstring>
+#include <new>
+#include <optional>
 #include <thread>
+#include <unordered_map>
 
 namespace holefill {
 namespace {
@@ -14,6 +20,277 @@ double timed(Work&& work) {
   work();
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+
+// ---- Triangle-triangle intersection ---------------------------------------------------------------
+
+// Relative tolerances: a point this close to a plane (times the triangles' size) lies in it; a
+// direction this close to a wedge's side (as a sine) is not inside it.
+constexpr double kPlaneTolerance = 1e-10;
+constexpr double kWedgeTolerance = 1e-9;
+
+struct Triangle3 {
+  std::array<Point, 3> corner;
+  Point normal;  // unit
+};
+
+bool same_point(const Point& a, const Point& b) { return a == b; }
+
+// The two coordinates to keep when projecting onto the plane with this normal.
+std::pair<int, int> projection_axes(const Point& normal) {
+  const double x = std::abs(normal[0]), y = std::abs(normal[1]), z = std::abs(normal[2]);
+  if (x >= y && x >= z) return {1, 2};
+  if (y >= z) return {2, 0};
+  return {0, 1};
+}
+
+struct Point2 {
+  double x, y;
+};
+
+double cross2(const Point2& o, const Point2& a, const Point2& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+bool on_segment2(const Point2& p, const Point2& a, const Point2& b) {
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y);
+}
+
+// Closed 2D segments [a, b] and [c, d] meet.
+bool segments_meet2(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  const double d1 = cross2(c, d, a), d2 = cross2(c, d, b);
+  const double d3 = cross2(a, b, c), d4 = cross2(a, b, d);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
+    return true;
+  }
+  return (d1 == 0 && on_segment2(a, c, d)) || (d2 == 0 && on_segment2(b, c, d)) ||
+         (d3 == 0 && on_segment2(c, a, b)) || (d4 == 0 && on_segment2(d, a, b));
+}
+
+bool inside_triangle2(const Point2& p, const Point2& a, const Point2& b, const Point2& c) {
+  const double d1 = cross2(a, b, p), d2 = cross2(b, c, p), d3 = cross2(c, a, p);
+  const bool negative = d1 < 0 || d2 < 0 || d3 < 0, positive = d1 > 0 || d2 > 0 || d3 > 0;
+  return !(negative && positive);
+}
+
+Point2 project(const Point& p, std::pair<int, int> axes) { return {p[axes.first], p[axes.second]}; }
+
+// The closed segment [s0, s1] meets the closed triangle.
+bool segment_meets_triangle(const Point& s0, const Point& s1, const Triangle3& t, double size) {
+  const Point& a = t.corner[0];
+  const double d0 = OpenMesh::dot(t.normal, s0 - a), d1 = OpenMesh::dot(t.normal, s1 - a);
+  const double tolerance = kPlaneTolerance * size;
+  if ((d0 > tolerance && d1 > tolerance) || (d0 < -tolerance && d1 < -tolerance)) return false;
+  const auto axes = projection_axes(t.normal);
+  const Point2 a2 = project(t.corner[0], axes), b2 = project(t.corner[1], axes),
+               c2 = project(t.corner[2], axes);
+  if (std::abs(d0) <= tolerance && std::abs(d1) <= tolerance) {
+    const Point2 p = project(s0, axes), q = project(s1, axes);
+    return inside_triangle2(p, a2, b2, c2) || inside_triangle2(q, a2, b2, c2) ||
+           segments_meet2(p, q, a2, b2) || segments_meet2(p, q, b2, c2) ||
+           segments_meet2(p, q, c2, a2);
+  }
+  const double along = std::clamp(d0 / (d0 - d1), 0.0, 1.0);
+  return inside_triangle2(project(s0 + along * (s1 - s0), axes), a2, b2, c2);
+}
+
+// Direction u lies strictly inside the wedge spanned by v1 and v2 (an angle below pi), all in
+// the plane with this normal.
+bool inside_wedge(const Point& u, const Point& v1, const Point& v2, const Point& normal) {
+  auto sine = [&normal](const Point& x, const Point& y) {
+    const double length = x.norm() * y.norm();
+    return length > 0.0 ? OpenMesh::dot(OpenMesh::cross(x, y), normal) / length : 0.0;
+  };
+  const double turn = sine(v1, v2) > 0.0 ? 1.0 : -1.0;
+  return turn * sine(v1, u) > kWedgeTolerance && turn * sine(u, v2) > kWedgeTolerance;
+}
+
+// Two non-degenerate triangles meet other than in the corners and edges they share (corners at
+// the same position count as shared).
+bool triangles_intersect(const Triangle3& t1, const Triangle3& t2) {
+  double size = 0.0;
+  for (const auto* t : {&t1, &t2}) {
+    for (int i = 0; i < 3; ++i) size = std::max(size, (t->corner[i] - t->corner[(i + 1) % 3]).norm());
+  }
+  int shared_in_1[3], shared_in_2[3], shared = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (same_point(t1.corner[i], t2.corner[j])) {
+        shared_in_1[shared] = i;
+        shared_in_2[shared++] = j;
+        break;
+      }
+    }
+  }
+  if (shared >= 3) return true;  // the same triangle twice
+  auto distance_to_plane_1 = [&](const Point& p) {
+    return OpenMesh::dot(t1.normal, p - t1.corner[0]);
+  };
+  const double tolerance = kPlaneTolerance * size;
+  if (shared == 2) {
+    // Meeting beyond the shared edge means folding onto each other in one plane.
+    const Point& apex1 = t1.corner[3 - shared_in_1[0] - shared_in_1[1]];
+    const Point& apex2 = t2.corner[3 - shared_in_2[0] - shared_in_2[1]];
+    if (std::abs(distance_to_plane_1(apex2)) > tolerance) return false;
+    const Point& p = t1.corner[shared_in_1[0]];
+    const Point& q = t1.corner[shared_in_1[1]];
+    const Point side1 = OpenMesh::cross(q - p, apex1 - p), side2 = OpenMesh::cross(q - p, apex2 - p);
+    return OpenMesh::dot(side1, side2) > 0.0;
+  }
+  if (shared == 1) {
+    const int i = shared_in_1[0], j = shared_in_2[0];
+    const Point& p = t1.corner[i];
+    const Point &a = t1.corner[(i + 1) % 3], &b = t1.corner[(i + 2) % 3];
+    const Point &c = t2.corner[(j + 1) % 3], &d = t2.corner[(j + 2) % 3];
+    const bool coplanar = std::abs(distance_to_plane_1(c)) <= tolerance &&
+                          std::abs(distance_to_plane_1(d)) <= tolerance;
+    if (coplanar) {
+      // Both lie in one plane: they overlap exactly when their wedges at p do.
+      const Point &n = t1.normal;
+      return inside_wedge(a - p, c - p, d - p, n) || inside_wedge(b - p, c - p, d - p, n) ||
+             inside_wedge(c - p, a - p, b - p, n) || inside_wedge(d - p, a - p, b - p, n) ||
+             segment_meets_triangle(a, b, t2, size) || segment_meets_triangle(c, d, t1, size);
+    }
+    // Otherwise they share a segment from p only if an edge opposite p crosses the other.
+    return segment_meets_triangle(a, b, t2, size) || segment_meets_triangle(c, d, t1, size);
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (segment_meets_triangle(t1.corner[i], t1.corner[(i + 1) % 3], t2, size) ||
+        segment_meets_triangle(t2.corner[i], t2.corner[(i + 1) % 3], t1, size)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+struct Box {
+  Point low{INFINITY, INFINITY, INFINITY}, high{-INFINITY, -INFINITY, -INFINITY};
+  void add(const Point& p) {
+    low.minimize(p);
+    high.maximize(p);
+  }
+  void grow(double margin) {
+    low -= Point(margin, margin, margin);
+    high += Point(margin, margin, margin);
+  }
+  bool overlaps(const Box& other) const {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (high[axis] < other.low[axis] || other.high[axis] < low[axis]) return false;
+    }
+    return true;
+  }
+};
+
+// A face as the intersection test needs it; nothing for a degenerate face.
+std::optional<Triangle3> triangle_of(const Mesh& mesh, FaceHandle face) {
+  Triangle3 t;
+  int c = 0;
+  for (const auto v : mesh.fv_range(face)) {
+    if (c == 3) return std::nullopt;
+    t.corner[c++] = mesh.point(v);
+  }
+  if (c != 3 || measure_triangle(t.corner[0], t.corner[1], t.corner[2], false).degenerate) {
+    return std::nullopt;
+  }
+  t.normal = OpenMesh::cross(t.corner[1] - t.corner[0], t.corner[2] - t.corner[0]).normalized();
+  return t;
+}
+
+// ---- Undoing a stage --------------------------------------------------------------------------------
+
+bool has_degenerate_face(const Mesh& mesh, const Patch& patch) {
+  for (const auto f : patch.faces) {
+    std::array<Point, 3> p;
+    int c = 0;
+    for (const auto v : mesh.fv_range(f)) p[c++ % 3] = mesh.point(v);
+    if (measure_triangle(p[0], p[1], p[2], false).degenerate) return true;
+  }
+  return false;
+}
+
+// The patch's faces, new vertices and new edges are the newest elements of the mesh, so deleting
+// them and collecting garbage moves no other element.
+bool patch_is_newest(const Mesh& mesh, const Patch& patch) {
+  const int first_face = static_cast<int>(mesh.n_faces() - patch.faces.size());
+  const int first_vertex = static_cast<int>(mesh.n_vertices() - patch.new_vertices.size());
+  for (const auto f : patch.faces) {
+    if (f.idx() < first_face) return false;
+  }
+  for (const auto v : patch.new_vertices) {
+    if (v.idx() < first_vertex) return false;
+  }
+  // The patch's own edges lie between two of its faces (its other edges are the hole's boundary).
+  std::size_t interior_halfedges = 0;
+  int oldest_interior_edge = static_cast<int>(mesh.n_edges());
+  for (const auto f : patch.faces) {
+    for (const auto h : mesh.fh_range(f)) {
+      const FaceHandle other = mesh.opposite_face_handle(h);
+      if (!other.is_valid() || other.idx() < first_face) continue;
+      ++interior_halfedges;
+      oldest_interior_edge = std::min(oldest_interior_edge, mesh.edge_handle(h).idx());
+    }
+  }
+  return oldest_interior_edge >= static_cast<int>(mesh.n_edges() - interior_halfedges / 2);
+}
+
+// What a stage can be undone to: the patch's triangles and vertices as they are now, or, when
+// the patch is not the newest part of the mesh (a viewer stepping holes in turn), the whole mesh.
+class StageUndo {
+ public:
+  StageUndo(const Mesh& mesh, const Patch& patch) : patch_(patch) {
+    if (!patch_is_newest(mesh, patch)) {
+      whole_mesh_ = mesh;
+      return;
+    }
+    for (const auto f : patch.faces) {
+      std::array<VertexHandle, 3> corners;
+      int c = 0;
+      for (const auto v : mesh.fv_range(f)) corners[c++ % 3] = v;
+      triangles_.push_back(corners);
+      face_stages_.push_back(face_stage(mesh, f));
+    }
+    for (const auto v : patch.new_vertices) positions_.push_back(mesh.point(v));
+  }
+
+  // Puts the mesh and `patch` back as they were when this was made.
+  void undo(Mesh& mesh, Patch& patch) const {
+    if (whole_mesh_) {
+      mesh = *whole_mesh_;
+      patch = patch_;
+      return;
+    }
+    for (const auto f : patch.faces) {
+      if (!mesh.status(f).deleted()) mesh.delete_face(f, false);
+    }
+    for (const auto v : patch.new_vertices) {
+      if (!mesh.status(v).deleted()) mesh.delete_vertex(v, false);
+    }
+    mesh.garbage_collection();
+    // Added again in the same order, every element gets back its index.
+    patch = patch_;
+    patch.faces.clear();
+    PatchTags tags(mesh);
+    for (std::size_t i = 0; i < positions_.size(); ++i) {
+      patch.new_vertices[i] = mesh.add_vertex(positions_[i]);
+      mesh.property(tags.vertex_stage, patch.new_vertices[i]) =
+          static_cast<std::uint8_t>(Stage::Refined);
+    }
+    for (std::size_t i = 0; i < triangles_.size(); ++i) {
+      const FaceHandle f = mesh.add_face(triangles_[i][0], triangles_[i][1], triangles_[i][2]);
+      mesh.property(tags.face_stage, f) = static_cast<std::uint8_t>(face_stages_[i]);
+      patch.faces.push_back(f);
+    }
+  }
+
+ private:
+  Patch patch_;
+  std::optional<Mesh> whole_mesh_;
+  std::vector<std::array<VertexHandle, 3>> triangles_;
+  std::vector<Stage> face_stages_;
+  std::vector<Point> positions_;
+};
+
+// ---- The stages ---------------------------------------------------------------------------------
 
 // The smoothing stage: the paper's umbrella operator, or fairing with umbrella as the fallback.
 void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options) {
@@ -26,6 +303,17 @@ void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options) {
     fill.smoothing_note = "fairing fell back to umbrella smoothing: " + result.problem;
   }
   smooth_patch(mesh, fill.patch, options);
+}
+
+// Why a finished stage must be undone: it made a degenerate triangle, or it made a patch that
+// did not intersect the mesh intersect it. Empty when the stage may stay.
+std::string stage_problem(const Mesh& mesh, const HoleFill& fill, std::size_t& intersections) {
+  if (has_degenerate_face(mesh, fill.patch)) return "it made a degenerate (zero-area) triangle";
+  intersections = count_patch_intersections(mesh, fill.patch);
+  if (fill.self_intersections == 0 && intersections > 0) {
+    return "it made the patch intersect the mesh";
+  }
+  return {};
 }
 
 // advance(), with the triangulation already planned when `plan` is given.
@@ -46,15 +334,52 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
         return false;
       }
       fill.patch = std::move(*result.patch);
+      fill.self_intersections = count_patch_intersections(mesh, fill.patch);
       break;
     }
-    case Stage::Triangulated:
-      fill.times.refine_seconds =
-          timed([&] { fill.refinement = refine_patch(mesh, fill.patch, options.refine); });
+    case Stage::Triangulated: {
+      const StageUndo undo(mesh, fill.patch);
+      std::string problem;
+      std::size_t intersections = 0;
+      fill.times.refine_seconds = timed([&] {
+        try {
+          fill.refinement = refine_patch(mesh, fill.patch, options.refine);
+          problem = stage_problem(mesh, fill, intersections);
+        } catch (const std::bad_alloc&) {
+          problem = "not enough memory";
+        }
+      });
+      if (!problem.empty()) {
+        undo.undo(mesh, fill.patch);
+        fill.refinement = RefineResult{};
+        fill.refinement_note = "refinement undone: " + problem;
+      } else {
+        fill.self_intersections = intersections;
+      }
+      fill.patch.stage = Stage::Refined;
       break;
-    case Stage::Refined:
-      fill.times.smooth_seconds = timed([&] { smooth(mesh, fill, options.smooth); });
+    }
+    case Stage::Refined: {
+      std::vector<Point> positions;
+      for (const auto v : fill.patch.new_vertices) positions.push_back(mesh.point(v));
+      std::string problem;
+      std::size_t intersections = 0;
+      fill.times.smooth_seconds = timed([&] {
+        smooth(mesh, fill, options.smooth);
+        problem = stage_problem(mesh, fill, intersections);
+      });
+      if (!problem.empty()) {
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+          mesh.set_point(fill.patch.new_vertices[i], positions[i]);
+        }
+        fill.smoothing_note += (fill.smoothing_note.empty() ? "" : "; ") +
+                               std::string("smoothing undone: ") + problem;
+      } else {
+        fill.self_intersections = intersections;
+      }
+      fill.patch.stage = Stage::Smoothed;
       break;
+    }
     case Stage::Smoothed:
       return false;
   }
@@ -71,6 +396,91 @@ HoleFill fill_planned(Mesh& mesh, const Hole& hole, const FillOptions& options,
 }
 
 }  // namespace
+
+std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch) {
+  if (patch.faces.empty()) return 0;
+  std::vector<Triangle3> patch_triangles;
+  std::vector<Box> patch_boxes;
+  std::vector<int> patch_face_ids;
+  Box reach;
+  for (const auto f : patch.faces) {
+    const auto t = triangle_of(mesh, f);
+    if (!t) continue;
+    Box box;
+    for (const auto& p : t->corner) box.add(p);
+    reach.add(box.low);
+    reach.add(box.high);
+    patch_triangles.push_back(*t);
+    patch_boxes.push_back(box);
+    patch_face_ids.push_back(f.idx());
+  }
+  if (patch_triangles.empty()) return 0;
+  const double margin = 1e-9 * (reach.high - reach.low).norm();
+  reach.grow(margin);
+  std::vector<int> is_patch(mesh.n_faces(), -1);
+  for (std::size_t i = 0; i < patch_face_ids.size(); ++i) is_patch[patch_face_ids[i]] = int(i);
+
+  // The other faces near the patch, bucketed in a uniform grid over the patch's reach.
+  struct Other {
+    Triangle3 triangle;
+    Box box;
+    int patch_index;  // -1 for a face outside the patch
+  };
+  std::vector<Other> others;
+  for (const auto f : mesh.faces()) {
+    Box box;
+    for (const auto v : mesh.fv_range(f)) box.add(mesh.point(v));
+    if (!box.overlaps(reach)) continue;
+    if (const auto t = triangle_of(mesh, f)) others.push_back({*t, box, is_patch[f.idx()]});
+  }
+  const Point extent = reach.high - reach.low;
+  const double cells_per_axis = std::clamp(std::cbrt(static_cast<double>(others.size())), 1.0, 64.0);
+  const double cell = std::max({extent[0], extent[1], extent[2]}) / cells_per_axis;
+  auto cell_range = [&](const Box& box, int axis) {
+    auto index = [&](double x) {
+      return cell > 0.0 ? static_cast<int>(std::clamp((x - reach.low[axis]) / cell, 0.0,
+                                                      cells_per_axis - 1.0))
+                        : 0;
+    };
+    return std::pair<int, int>(index(box.low[axis]), index(box.high[axis]));
+  };
+  const int n = static_cast<int>(cells_per_axis);
+  std::vector<std::vector<int>> grid(static_cast<std::size_t>(n) * n * n);
+  for (std::size_t o = 0; o < others.size(); ++o) {
+    const auto [x0, x1] = cell_range(others[o].box, 0);
+    const auto [y0, y1] = cell_range(others[o].box, 1);
+    const auto [z0, z1] = cell_range(others[o].box, 2);
+    for (int x = x0; x <= x1; ++x) {
+      for (int y = y0; y <= y1; ++y) {
+        for (int z = z0; z <= z1; ++z) grid[(x * n + y) * n + z].push_back(static_cast<int>(o));
+      }
+    }
+  }
+
+  std::size_t pairs = 0;
+  std::vector<int> seen(others.size(), -1);
+  for (std::size_t i = 0; i < patch_triangles.size(); ++i) {
+    const auto [x0, x1] = cell_range(patch_boxes[i], 0);
+    const auto [y0, y1] = cell_range(patch_boxes[i], 1);
+    const auto [z0, z1] = cell_range(patch_boxes[i], 2);
+    for (int x = x0; x <= x1; ++x) {
+      for (int y = y0; y <= y1; ++y) {
+        for (int z = z0; z <= z1; ++z) {
+          for (const int o : grid[(x * n + y) * n + z]) {
+            if (seen[o] == static_cast<int>(i)) continue;
+            seen[o] = static_cast<int>(i);
+            const Other& other = others[o];
+            // Pairs within the patch are counted once, from their first triangle.
+            if (other.patch_index >= 0 && other.patch_index <= static_cast<int>(i)) continue;
+            if (!other.box.overlaps(patch_boxes[i])) continue;
+            if (triangles_intersect(patch_triangles[i], other.triangle)) ++pairs;
+          }
+        }
+      }
+    }
+  }
+  return pairs;
+}
 
 bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options) {
   return advance_with(mesh, hole, fill, options, nullptr);

@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <new>
 #include <unordered_map>
 
 #include "holefill/triangulate.h"
@@ -34,6 +36,18 @@ HolePolygon hole_polygon(const Mesh& mesh, const Hole& hole) {
   return polygon;
 }
 
+namespace {
+
+// The hole is the far side of one lone triangle: its three boundary edges all border one face.
+bool is_back_of_lone_triangle(const Mesh& mesh, const Hole& hole) {
+  if (hole.size() != 3) return false;
+  const FaceHandle face = mesh.opposite_face_handle(hole.halfedges[0]);
+  return face.is_valid() && face == mesh.opposite_face_handle(hole.halfedges[1]) &&
+         face == mesh.opposite_face_handle(hole.halfedges[2]);
+}
+
+}  // namespace
+
 PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
                                         const TriangulateOptions& options) {
   PlannedTriangulation result;
@@ -41,9 +55,14 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
     result.failure = "a boundary loop of fewer than 3 edges cannot be triangulated";
     return result;
   }
-  if (hole.size() >= kMaxPolygonSize) {
-    result.failure = "the hole has " + std::to_string(hole.size()) + " boundary edges; at most " +
-                     std::to_string(kMaxPolygonSize - 1) + " are supported";
+  const bool restricted = options.restricted.above_edges > 0 &&
+                          hole.size() > options.restricted.above_edges;
+  if (hole.size() >= kMaxPolygonSize || (hole.size() > kMaxFullSearchEdges && !restricted)) {
+    result.failure = "the hole has " + std::to_string(hole.size()) +
+                     " boundary edges, too many for the full dynamic program (at most " +
+                     std::to_string(std::min(kMaxFullSearchEdges, kMaxPolygonSize - 1)) +
+                     ": its time grows with the cube of the edge count); leave it out with "
+                     "--max-boundary";
     return result;
   }
   std::unordered_map<int, int> seen;
@@ -54,10 +73,31 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
       return result;
     }
   }
-  result.triangulation = triangulate_polygon(hole_polygon(mesh, hole), options);
+  if (is_back_of_lone_triangle(mesh, hole)) {
+    result.failure =
+        "it is the back of a lone triangle (face " +
+        std::to_string(mesh.opposite_face_handle(hole.halfedges[0]).idx() + 1) +
+        "); filling it would only cover that face with a copy of itself";
+    return result;
+  }
+  try {
+    result.triangulation = triangulate_polygon(hole_polygon(mesh, hole), options);
+  } catch (const std::bad_alloc&) {
+    result.failure = "not enough memory to triangulate it";
+    return result;
+  }
   if (!result.triangulation) {
     result.failure =
-        "no valid triangulation: every one would duplicate an edge that already exists";
+        hole.size() > kMaxFullSearchEdges
+            ? "the restricted search for large holes found no valid triangulation, and the hole "
+              "has too many edges for the full one (more than " +
+                  std::to_string(kMaxFullSearchEdges) + ")"
+            : "no valid triangulation: every one would duplicate an edge that already exists";
+  } else if (result.triangulation->quality.degenerate > 0) {
+    result.triangulation.reset();
+    result.failure =
+        "its triangulation would have a degenerate (zero-area) triangle: its boundary has "
+        "collinear or coincident points";
   }
   return result;
 }

@@ -39,6 +39,11 @@ struct HoleFill {
   StageTimes times;
   RefineResult refinement;
   std::string smoothing_note;  // e.g. why fairing fell back to umbrella smoothing
+  std::string refinement_note;  // e.g. why refinement was undone
+  // Pairs (patch triangle, other triangle of the mesh or of the patch) that intersect other than
+  // along shared vertices and edges, after the last stage run. Stages that would make a patch
+  // that did not intersect the mesh intersect it are undone (and say so in their note).
+  std::size_t self_intersections = 0;
 
   Stage stage() const { return patch.stage; }
   bool failed() const { return !failure.empty(); }
@@ -58,6 +63,10 @@ struct HoleSelection {
   std::size_t max_boundary_edges = 0;
   bool includes(const Hole& hole) const;
 };
+
+// Pairs of a patch triangle and another triangle of the mesh (the patch's own included) that
+// intersect other than along the vertices and edges they share. Degenerate triangles are skipped.
+std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch);
 
 // Fills the selected holes of `holes` (as find_holes gave them for this mesh), in order.
 std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
