@@ -28,7 +28,8 @@ usage:
   holefill help [COMMAND]         this text, or a command's options
 
 Meshes are read from .obj .off .ply .stl.
-Exit codes: 0 ok, 1 some holes not filled, 2 usage, 3 bad input, 4 write failed.
+Exit codes: 0 ok, 1 some holes not filled, 2 usage, 3 bad input, 4 write failed,
+5 all filled but some patch intersects the mesh, 6 internal error.
 )";
 
 constexpr const char* kInfoHelp = R"(usage: holefill info MESH
@@ -43,7 +44,7 @@ constexpr const char* kFillHelp = R"(usage: holefill fill MESH -o OUT [options]
   -o, --output OUT            where to write the result (.obj .off .ply); written atomically
   --weight maxmin|liepa|area  triangulation weight (default maxmin, the paper's)
   --fold-limit DEG            maxmin: a dihedral angle above DEG is minimised before the
-                              smallest angle is maximised (default 90; 180 = the paper's order)
+                              smallest angle is maximised (default 45; 180 = the paper's order)
   --tau T                     refinement density factor, > 0 (default 1.41421, sqrt 2)
   --smooth umbrella|fair      umbrella smoothing (the paper's, default) or fairing that
                               continues the surrounding curvature
@@ -207,6 +208,16 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
   }
   if (input.empty()) throw UsageError{"fill needs a MESH"};
   if (output.empty()) throw UsageError{"fill needs -o OUT"};
+  {
+    std::string ext = std::filesystem::path(output).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const auto& writable = writable_extensions();
+    if (std::find(writable.begin(), writable.end(), ext) == writable.end()) {
+      throw UsageError{"-o " + output + ": cannot write '" + ext +
+                       "' files (use .obj, .off or .ply)"};
+    }
+  }
 
   Mesh mesh = load_and_warn(input, err);
   const auto holes = find_holes(mesh);
@@ -230,8 +241,9 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
   report.holes_after = find_holes(mesh).size();
   report.fills = &fills;
 
-  out << "  hole  boundary  stage          new_v   new_f  min_angle  max_dihedral   seconds\n";
-  std::size_t filled = 0;
+  out << "  hole  boundary  stage          new_v   new_f  min_angle  max_dihedral  intersect"
+         "   seconds\n";
+  std::size_t filled = 0, intersecting = 0;
   for (const auto& fill : fills) {
     const auto& s = fill.stats;
     const double seconds =
@@ -240,8 +252,19 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
         << std::setw(13) << (fill.failed() ? "FAILED" : to_string(fill.stage())) << std::right
         << std::setw(7) << s.new_vertices << std::setw(8) << s.new_faces << std::setw(11)
         << format("%.2f", s.min_angle_deg) << std::setw(14) << format("%.2f", s.max_dihedral_deg)
-        << std::setw(10) << format("%.4f", seconds) << "\n";
+        << std::setw(11) << fill.self_intersections << std::setw(10) << format("%.4f", seconds)
+        << "\n";
     if (!fill.failed()) ++filled;
+    if (fill.self_intersections > 0) {
+      ++intersecting;
+      err << "holefill: " << input << ": hole " << fill.hole_id
+          << ": the patch intersects the mesh (" << fill.self_intersections
+          << " pairs of triangles)\n";
+    }
+    if (!fill.refinement_note.empty()) {
+      err << "holefill: " << input << ": hole " << fill.hole_id << ": " << fill.refinement_note
+          << "\n";
+    }
     if (!fill.smoothing_note.empty()) {
       err << "holefill: " << input << ": hole " << fill.hole_id << ": " << fill.smoothing_note
           << "\n";
@@ -252,7 +275,9 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
     }
   }
   out << input << ": filled " << filled << " of " << fills.size() << " selected holes ("
-      << holes.size() << " in all); " << report.holes_after << " holes remain\n";
+      << holes.size() << " in all); " << report.holes_after << " holes remain";
+  if (intersecting) out << "; " << intersecting << " patches intersect the mesh";
+  out << "\n";
 
   try {
     save_mesh(mesh, output);
@@ -274,7 +299,8 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
       return kWriteFailed;
     }
   }
-  return filled == fills.size() ? kOk : kSomeHolesNotFilled;
+  if (filled != fills.size()) return kSomeHolesNotFilled;
+  return intersecting ? kPatchesIntersect : kOk;
 }
 
 }  // namespace
@@ -308,6 +334,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   } catch (const std::bad_alloc&) {
     err << "holefill: out of memory\n";
     return kBadInput;
+  } catch (const std::exception& e) {
+    err << "holefill: internal error: " << e.what() << " (please report it)\n";
+    return kInternalError;
   }
 }
 
