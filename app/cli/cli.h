@@ -15,6 +15,9 @@ enum ExitCode : int {
   kUsage = 2,               // bad arguments
   kBadInput = 3,            // input file missing, unreadable or invalid
   kWriteFailed = 4,         // output or report could not be written
+  kPatchesIntersect = 5,    // output written, every selected hole filled, but some patch
+                            // intersects the mesh (the report names the holes)
+  kInternalError = 6,       // an unexpected error inside holefill (a bug: please report it)
 };
 
 // Runs `holefill ARGS...` (args excludes the program name); returns the exit code.

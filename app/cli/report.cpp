@@ -46,7 +46,11 @@ void write_fill(const HoleFill& fill, std::ostream& out) {
       << ", \"filled\": " << (fill.failed() ? "false" : "true")
       << ", \"stage\": " << quoted(to_string(fill.stage()));
   if (fill.failed()) out << ", \"failure\": " << quoted(fill.failure);
+  if (!fill.refinement_note.empty()) {
+    out << ", \"refinement_note\": " << quoted(fill.refinement_note);
+  }
   if (!fill.smoothing_note.empty()) out << ", \"smoothing_note\": " << quoted(fill.smoothing_note);
+  out << ", \"self_intersections\": " << fill.self_intersections;
   out << ",\n     \"new_vertices\": " << s.new_vertices << ", \"new_faces\": " << s.new_faces
       << ", \"min_angle_deg\": " << number(s.min_angle_deg)
       << ", \"mean_min_angle_deg\": " << number(s.mean_min_angle_deg)

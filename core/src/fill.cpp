@@ -21,7 +21,8 @@ double timed(Work&& work) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// ---- Triangle-triangle intersection ---------------------------------------------------------------
+// ---- Triangle-triangle intersection
+// ---------------------------------------------------------------
 
 // Relative tolerances: a point this close to a plane (times the triangles' size) lies in it; a
 // direction this close to a wedge's side (as a sine) is not inside it.
@@ -69,7 +70,7 @@ bool segments_meet2(const Point2& a, const Point2& b, const Point2& c, const Poi
 
 bool inside_triangle2(const Point2& p, const Point2& a, const Point2& b, const Point2& c) {
   const double d1 = cross2(a, b, p), d2 = cross2(b, c, p), d3 = cross2(c, a, p);
-  const bool negative = d1 < 0 || d2 < 0 || d3 < 0, positive = d1 > 0 || d2 > 0 || d3 > 0;
+  const bool negative = d1 < 0 || d2 < 0 || d3<0, positive = d1> 0 || d2 > 0 || d3 > 0;
   return !(negative && positive);
 }
 
@@ -110,7 +111,8 @@ bool inside_wedge(const Point& u, const Point& v1, const Point& v2, const Point&
 bool triangles_intersect(const Triangle3& t1, const Triangle3& t2) {
   double size = 0.0;
   for (const auto* t : {&t1, &t2}) {
-    for (int i = 0; i < 3; ++i) size = std::max(size, (t->corner[i] - t->corner[(i + 1) % 3]).norm());
+    for (int i = 0; i < 3; ++i)
+      size = std::max(size, (t->corner[i] - t->corner[(i + 1) % 3]).norm());
   }
   int shared_in_1[3], shared_in_2[3], shared = 0;
   for (int i = 0; i < 3; ++i) {
@@ -134,7 +136,8 @@ bool triangles_intersect(const Triangle3& t1, const Triangle3& t2) {
     if (std::abs(distance_to_plane_1(apex2)) > tolerance) return false;
     const Point& p = t1.corner[shared_in_1[0]];
     const Point& q = t1.corner[shared_in_1[1]];
-    const Point side1 = OpenMesh::cross(q - p, apex1 - p), side2 = OpenMesh::cross(q - p, apex2 - p);
+    const Point side1 = OpenMesh::cross(q - p, apex1 - p),
+                side2 = OpenMesh::cross(q - p, apex2 - p);
     return OpenMesh::dot(side1, side2) > 0.0;
   }
   if (shared == 1) {
@@ -146,7 +149,7 @@ bool triangles_intersect(const Triangle3& t1, const Triangle3& t2) {
                           std::abs(distance_to_plane_1(d)) <= tolerance;
     if (coplanar) {
       // Both lie in one plane: they overlap exactly when their wedges at p do.
-      const Point &n = t1.normal;
+      const Point& n = t1.normal;
       return inside_wedge(a - p, c - p, d - p, n) || inside_wedge(b - p, c - p, d - p, n) ||
              inside_wedge(c - p, a - p, b - p, n) || inside_wedge(d - p, a - p, b - p, n) ||
              segment_meets_triangle(a, b, t2, size) || segment_meets_triangle(c, d, t1, size);
@@ -196,7 +199,8 @@ std::optional<Triangle3> triangle_of(const Mesh& mesh, FaceHandle face) {
   return t;
 }
 
-// ---- Undoing a stage --------------------------------------------------------------------------------
+// ---- Undoing a stage
+// --------------------------------------------------------------------------------
 
 bool has_degenerate_face(const Mesh& mesh, const Patch& patch) {
   for (const auto f : patch.faces) {
@@ -372,8 +376,8 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
         for (std::size_t i = 0; i < positions.size(); ++i) {
           mesh.set_point(fill.patch.new_vertices[i], positions[i]);
         }
-        fill.smoothing_note += (fill.smoothing_note.empty() ? "" : "; ") +
-                               std::string("smoothing undone: ") + problem;
+        fill.smoothing_note +=
+            (fill.smoothing_note.empty() ? "" : "; ") + std::string("smoothing undone: ") + problem;
       } else {
         fill.self_intersections = intersections;
       }
@@ -434,12 +438,13 @@ std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch) {
     if (const auto t = triangle_of(mesh, f)) others.push_back({*t, box, is_patch[f.idx()]});
   }
   const Point extent = reach.high - reach.low;
-  const double cells_per_axis = std::clamp(std::cbrt(static_cast<double>(others.size())), 1.0, 64.0);
+  const double cells_per_axis =
+      std::clamp(std::cbrt(static_cast<double>(others.size())), 1.0, 64.0);
   const double cell = std::max({extent[0], extent[1], extent[2]}) / cells_per_axis;
   auto cell_range = [&](const Box& box, int axis) {
     auto index = [&](double x) {
-      return cell > 0.0 ? static_cast<int>(std::clamp((x - reach.low[axis]) / cell, 0.0,
-                                                      cells_per_axis - 1.0))
+      return cell > 0.0 ? static_cast<int>(
+                              std::clamp((x - reach.low[axis]) / cell, 0.0, cells_per_axis - 1.0))
                         : 0;
     };
     return std::pair<int, int>(index(box.low[axis]), index(box.high[axis]));

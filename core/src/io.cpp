@@ -138,9 +138,7 @@ class Lines {
   }
   std::size_t number() const { return number_; }
   // Bytes after the current line.
-  std::size_t remaining() const {
-    return position_ >= text_.size() ? 0 : text_.size() - position_;
-  }
+  std::size_t remaining() const { return position_ >= text_.size() ? 0 : text_.size() - position_; }
   std::size_t offset() const { return std::min(position_, text_.size()); }
 
  private:
@@ -163,9 +161,9 @@ void require_text(std::string_view text, const fs::path& path, const char* forma
 // Positions and faces as read, before any check of the mesh they make.
 struct Soup {
   std::vector<Point> positions;
-  std::vector<int> corners;               // vertex indices of all faces, one after another
-  std::vector<std::size_t> face_end;      // face f uses corners [face_end[f-1], face_end[f])
-  std::vector<std::size_t> face_line;     // where face f was read (0: unknown), for messages
+  std::vector<int> corners;            // vertex indices of all faces, one after another
+  std::vector<std::size_t> face_end;   // face f uses corners [face_end[f-1], face_end[f])
+  std::vector<std::size_t> face_line;  // where face f was read (0: unknown), for messages
   std::size_t face_begin(std::size_t f) const { return f == 0 ? 0 : face_end[f - 1]; }
   std::size_t face_count() const { return face_end.size(); }
   // Closes the face whose last corner is corners[end - 1] (corners may be filled later).
@@ -186,7 +184,8 @@ void require_finite(const Point& p, std::size_t vertex_number, std::size_t line,
                                    " has a non-finite (NaN or infinite) coordinate");
 }
 
-// ---- OBJ ------------------------------------------------------------------------------------------
+// ---- OBJ
+// ------------------------------------------------------------------------------------------
 
 Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) {
   require_text(text, path, "OBJ");
@@ -228,14 +227,13 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) 
       soup.positions.push_back(p);
     } else if (keyword == "f" || keyword == "fo") {
       const std::size_t first = corners.size();
-      for (std::string_view corner = take_token(rest); !corner.empty();
-           corner = take_token(rest)) {
+      for (std::string_view corner = take_token(rest); !corner.empty(); corner = take_token(rest)) {
         // "v", "v/vt", "v//vn" or "v/vt/vn": only the position index matters here.
         const std::string_view index_text = corner.substr(0, corner.find('/'));
         long long index = 0;
         if (!parse_integer(index_text, index)) {
-          fail(path, at_line(line_number) + "face corner " + quoted(corner) +
-                         " is not a vertex index");
+          fail(path,
+               at_line(line_number) + "face corner " + quoted(corner) + " is not a vertex index");
         }
         if (index == 0) fail(path, at_line(line_number) + "vertex index 0 (OBJ counts from 1)");
         const long long defined = static_cast<long long>(soup.positions.size());
@@ -276,7 +274,8 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) 
   return soup;
 }
 
-// ---- OFF ------------------------------------------------------------------------------------------
+// ---- OFF
+// ------------------------------------------------------------------------------------------
 
 // "OFF" with the optional prefixes of the format: ST (texture), C (colour), N (normal), 4 (4D),
 // n (nD). Returns false when `keyword` is no OFF keyword.
@@ -392,17 +391,18 @@ Soup parse_off(std::string_view text, const fs::path& path) {
   return soup;
 }
 
-// ---- PLY ------------------------------------------------------------------------------------------
+// ---- PLY
+// ------------------------------------------------------------------------------------------
 
 enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
 
 bool parse_ply_type(std::string_view name, PlyType& type) {
   static const std::pair<std::string_view, PlyType> kNames[] = {
-      {"char", PlyType::Int8},     {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
-      {"uint8", PlyType::UInt8},   {"short", PlyType::Int16},     {"int16", PlyType::Int16},
-      {"ushort", PlyType::UInt16}, {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
-      {"int32", PlyType::Int32},   {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
-      {"float", PlyType::Float32}, {"float32", PlyType::Float32}, {"double", PlyType::Float64},
+      {"char", PlyType::Int8},      {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
+      {"uint8", PlyType::UInt8},    {"short", PlyType::Int16},     {"int16", PlyType::Int16},
+      {"ushort", PlyType::UInt16},  {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
+      {"int32", PlyType::Int32},    {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
+      {"float", PlyType::Float32},  {"float32", PlyType::Float32}, {"double", PlyType::Float64},
       {"float64", PlyType::Float64}};
   for (const auto& [text, value] : kNames) {
     if (name == text) {
@@ -466,8 +466,8 @@ class PlyBody {
     unsigned char raw[8];
     std::memcpy(raw, bytes_.data() + position_, size);
     position_ += size;
-    const bool swap = (encoding_ == PlyEncoding::BigEndian) != (std::endian::native ==
-                                                                  std::endian::big);
+    const bool swap =
+        (encoding_ == PlyEncoding::BigEndian) != (std::endian::native == std::endian::big);
     if (swap) std::reverse(raw, raw + size);
     switch (type) {
       case PlyType::Int8:
@@ -639,8 +639,7 @@ Soup parse_ply(std::string_view bytes, const fs::path& path) {
         }
       }
       if (is_face && property.is_list &&
-          (face_list < 0 || property.name == "vertex_indices" ||
-           property.name == "vertex_index")) {
+          (face_list < 0 || property.name == "vertex_indices" || property.name == "vertex_index")) {
         face_list = i;
       }
     }
@@ -668,8 +667,8 @@ Soup parse_ply(std::string_view bytes, const fs::path& path) {
           continue;
         }
         const double count = body.read(property.count_type);
-        if (count < 0.0 || count > static_cast<double>(body.remaining() /
-                                                       body.smallest(property.type) + 1)) {
+        if (count < 0.0 ||
+            count > static_cast<double>(body.remaining() / body.smallest(property.type) + 1)) {
           fail(path, "a list in the " + std::to_string(r) + "th '" + element.name +
                          "' element claims " + std::to_string(static_cast<long long>(count)) +
                          " items, more than the file holds (corrupt or truncated)");
@@ -697,9 +696,9 @@ Soup parse_ply(std::string_view bytes, const fs::path& path) {
   for (std::size_t f = 0, c = 0; f < soup.face_count(); ++f) {
     for (; c < soup.face_end[f]; ++c) {
       if (corners[c] >= vertex_count) {
-        fail(path, "face " + std::to_string(f) + " refers to vertex " +
-                       std::to_string(corners[c]) + ", but the file has " +
-                       std::to_string(vertex_count) + " vertices (numbered from 0)");
+        fail(path, "face " + std::to_string(f) + " refers to vertex " + std::to_string(corners[c]) +
+                       ", but the file has " + std::to_string(vertex_count) +
+                       " vertices (numbered from 0)");
       }
       soup.corners.push_back(static_cast<int>(corners[c]));
     }
@@ -707,7 +706,8 @@ Soup parse_ply(std::string_view bytes, const fs::path& path) {
   return soup;
 }
 
-// ---- STL ------------------------------------------------------------------------------------------
+// ---- STL
+// ------------------------------------------------------------------------------------------
 
 // Exact positions as hash keys (-0 and +0 are one position).
 struct PositionKey {
@@ -840,7 +840,8 @@ Soup parse_stl(std::string_view bytes, const fs::path& path) {
   const std::string binary_size =
       bytes.size() < kStlHeader
           ? "it is shorter than a binary STL's 84-byte header"
-          : "a binary STL with the " + std::to_string(count) + " triangles its header counts takes " +
+          : "a binary STL with the " + std::to_string(count) +
+                " triangles its header counts takes " +
                 std::to_string(kStlHeader + kStlRecord * static_cast<std::uint64_t>(count)) +
                 " bytes, but the file has " + std::to_string(bytes.size());
   if (!starts_with_word(bytes, "solid")) {
@@ -854,7 +855,8 @@ Soup parse_stl(std::string_view bytes, const fs::path& path) {
   return parse_ascii_stl(bytes, path);
 }
 
-// ---- Telling formats apart ------------------------------------------------------------------------
+// ---- Telling formats apart
+// ------------------------------------------------------------------------
 
 // The format the contents clearly are, or Unknown.
 Format sniff(std::string_view bytes) {
@@ -887,7 +889,8 @@ Format sniff(std::string_view bytes) {
   return Format::Unknown;
 }
 
-// ---- From polygons to a mesh ----------------------------------------------------------------------
+// ---- From polygons to a mesh
+// ----------------------------------------------------------------------
 
 using Triangle = std::array<int, 3>;
 
@@ -1094,7 +1097,8 @@ Mesh build_mesh(const Soup& soup, LoadReport& report) {
   }
   report.duplicate_faces_dropped = drop_duplicate_triangles(triangles);
   report.faces_flipped = orient_consistently(triangles);
-  if (report.format != "stl") report.duplicate_positions = count_duplicate_positions(soup.positions);
+  if (report.format != "stl")
+    report.duplicate_positions = count_duplicate_positions(soup.positions);
   return assemble(soup.positions, triangles, report);
 }
 
@@ -1107,7 +1111,8 @@ void add_warnings(LoadReport& report) {
        "degenerate faces (a vertex used twice, or fewer than 3 corners) were dropped");
   warn(report.duplicate_faces_dropped,
        "duplicate faces (the same corners as an earlier face) were dropped");
-  warn(report.faces_flipped, "faces were flipped to agree with the orientation of their neighbours");
+  warn(report.faces_flipped,
+       "faces were flipped to agree with the orientation of their neighbours");
   warn(report.faces_detached, "non-manifold faces were kept on their own copies of their vertices");
   warn(report.duplicate_positions,
        "vertices have exactly the position of another vertex (kept apart: the surface may be "
@@ -1116,7 +1121,8 @@ void add_warnings(LoadReport& report) {
   warn(report.elements_ignored, "line, point or curve elements were ignored (not surfaces)");
 }
 
-// ---- Files ----------------------------------------------------------------------------------------
+// ---- Files
+// ----------------------------------------------------------------------------------------
 
 std::string read_file(const fs::path& path) {
   std::error_code ec;
@@ -1180,8 +1186,8 @@ void write_mesh_text(const Mesh& mesh, const std::string& ext, std::ostream& out
 }
 
 bool has_deleted_elements(const Mesh& mesh) {
-  const auto live_vertices = static_cast<std::size_t>(
-      std::distance(mesh.vertices().begin(), mesh.vertices().end()));
+  const auto live_vertices =
+      static_cast<std::size_t>(std::distance(mesh.vertices().begin(), mesh.vertices().end()));
   const auto live_faces =
       static_cast<std::size_t>(std::distance(mesh.faces().begin(), mesh.faces().end()));
   return live_vertices != mesh.n_vertices() || live_faces != mesh.n_faces();
@@ -1215,12 +1221,12 @@ Mesh load_mesh_from_memory(const std::string& bytes, const fs::path& name, LoadR
     std::string upper = name_of(by_content);
     std::transform(upper.begin(), upper.end(), upper.begin(),
                    [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    out.warnings.push_back(
-        by_name == Format::Unknown
-            ? "the extension '" + ext + "' is not a mesh format; the contents are " + upper +
-                  " and were read as such"
-            : "the contents are " + upper + ", not what the extension '" + ext +
-                  "' says; read as " + upper);
+    out.warnings.push_back(by_name == Format::Unknown
+                               ? "the extension '" + ext +
+                                     "' is not a mesh format; the contents are " + upper +
+                                     " and were read as such"
+                               : "the contents are " + upper + ", not what the extension '" + ext +
+                                     "' says; read as " + upper);
   }
   if (format == Format::Unknown) {
     fail(name, "unsupported file type '" + ext + "' (use .obj, .off, .ply or .stl)");

@@ -55,8 +55,8 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
     result.failure = "a boundary loop of fewer than 3 edges cannot be triangulated";
     return result;
   }
-  const bool restricted = options.restricted.above_edges > 0 &&
-                          hole.size() > options.restricted.above_edges;
+  const bool restricted =
+      options.restricted.above_edges > 0 && hole.size() > options.restricted.above_edges;
   if (hole.size() >= kMaxPolygonSize || (hole.size() > kMaxFullSearchEdges && !restricted)) {
     result.failure = "the hole has " + std::to_string(hole.size()) +
                      " boundary edges, too many for the full dynamic program (at most " +
@@ -74,10 +74,9 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
     }
   }
   if (is_back_of_lone_triangle(mesh, hole)) {
-    result.failure =
-        "it is the back of a lone triangle (face " +
-        std::to_string(mesh.opposite_face_handle(hole.halfedges[0]).idx() + 1) +
-        "); filling it would only cover that face with a copy of itself";
+    result.failure = "it is the back of a lone triangle (face " +
+                     std::to_string(mesh.opposite_face_handle(hole.halfedges[0]).idx() + 1) +
+                     "); filling it would only cover that face with a copy of itself";
     return result;
   }
   try {

@@ -38,7 +38,7 @@ struct HoleFill {
   PatchStats stats;     // after the last stage run
   StageTimes times;
   RefineResult refinement;
-  std::string smoothing_note;  // e.g. why fairing fell back to umbrella smoothing
+  std::string smoothing_note;   // e.g. why fairing fell back to umbrella smoothing
   std::string refinement_note;  // e.g. why refinement was undone
   // Pairs (patch triangle, other triangle of the mesh or of the patch) that intersect other than
   // along shared vertices and edges, after the last stage run. Stages that would make a patch
