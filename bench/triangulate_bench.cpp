@@ -1,76 +1,64 @@
-// The dynamic program alone, per weight and hole size (the paper's bottleneck, Table I).
+// The dynamic program alone, per weight and hole size (the paper's bottleneck, Table I): the full
+// search (pruned, and the plain loop for reference) and the restricted search for large holes.
 #include <benchmark/benchmark.h>
+
+#include <initializer_list>
 
 #include "bench_holes.h"
 
 namespace holefill::bench {
 namespace {
 
-void triangulate(benchmark::State& state, WeightKind weight, bool prune) {
+enum class Search { Full, PlainLoop, Restricted };
+
+void triangulate(benchmark::State& state, WeightKind weight, Search search) {
   const HolePolygon polygon = wavy_hole(static_cast<int>(state.range(0)));
   TriangulateOptions options{weight};
-  options.prune = prune;
+  options.prune = search != Search::PlainLoop;
+  options.restricted.above_edges = 0;  // the full search, whatever the size
   for (auto _ : state) {
-    auto result = triangulate_polygon(polygon, options);
+    auto result = search == Search::Restricted ? triangulate_polygon_restricted(polygon, options)
+                                               : triangulate_polygon(polygon, options);
     benchmark::DoNotOptimize(result);
   }
   state.counters["edges"] = static_cast<double>(state.range(0));
 }
 
-void BM_TriangulateMaxMin(benchmark::State& s) { triangulate(s, WeightKind::MaxMin, true); }
-void BM_TriangulateLiepa(benchmark::State& s) { triangulate(s, WeightKind::Liepa, true); }
-void BM_TriangulateArea(benchmark::State& s) { triangulate(s, WeightKind::Area, true); }
-void restricted(benchmark::State& state, WeightKind weight) {
-  const HolePolygon polygon = wavy_hole(static_cast<int>(state.range(0)));
-  for (auto _ : state) {
-    auto result = triangulate_polygon_restricted(polygon, {weight});
-    benchmark::DoNotOptimize(result);
-  }
-  state.counters["edges"] = static_cast<double>(state.range(0));
-}
-void BM_RestrictedMaxMin(benchmark::State& s) { restricted(s, WeightKind::MaxMin); }
-void BM_RestrictedLiepa(benchmark::State& s) { restricted(s, WeightKind::Liepa); }
-BENCHMARK(BM_RestrictedMaxMin)
-    ->Arg(400)
-    ->Arg(800)
-    ->Arg(2000)
-    ->Arg(5000)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_RestrictedLiepa)
-    ->Arg(400)
-    ->Arg(800)
-    ->Arg(2000)
-    ->Arg(5000)
-    ->Unit(benchmark::kMillisecond);
-
+void BM_TriangulateMaxMin(benchmark::State& s) { triangulate(s, WeightKind::MaxMin, Search::Full); }
+void BM_TriangulateLiepa(benchmark::State& s) { triangulate(s, WeightKind::Liepa, Search::Full); }
+void BM_TriangulateArea(benchmark::State& s) { triangulate(s, WeightKind::Area, Search::Full); }
 void BM_TriangulateMaxMinPlainLoop(benchmark::State& s) {
-  triangulate(s, WeightKind::MaxMin, false);
+  triangulate(s, WeightKind::MaxMin, Search::PlainLoop);
+}
+void BM_RestrictedMaxMin(benchmark::State& s) {
+  triangulate(s, WeightKind::MaxMin, Search::Restricted);
+}
+void BM_RestrictedLiepa(benchmark::State& s) {
+  triangulate(s, WeightKind::Liepa, Search::Restricted);
 }
 
-BENCHMARK(BM_TriangulateMaxMin)
-    ->Arg(50)
-    ->Arg(100)
-    ->Arg(200)
-    ->Arg(400)
-    ->Arg(800)
-    ->Arg(2000)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_TriangulateLiepa)
-    ->Arg(50)
-    ->Arg(100)
-    ->Arg(200)
-    ->Arg(400)
-    ->Arg(800)
-    ->Arg(2000)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_TriangulateArea)
-    ->Arg(50)
-    ->Arg(100)
-    ->Arg(200)
-    ->Arg(400)
-    ->Arg(800)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_TriangulateMaxMinPlainLoop)->Arg(100)->Arg(400)->Unit(benchmark::kMillisecond);
+// Runs the benchmark at each hole size, in milliseconds.
+void sizes(benchmark::internal::Benchmark* bench, std::initializer_list<int> edges) {
+  for (const int n : edges) bench->Arg(n);
+  bench->Unit(benchmark::kMillisecond);
+}
+
+const bool kRegistered = [] {
+  sizes(benchmark::RegisterBenchmark("BM_TriangulateMaxMin", BM_TriangulateMaxMin),
+        {50, 100, 200, 400, 800, 2000});
+  sizes(benchmark::RegisterBenchmark("BM_TriangulateLiepa", BM_TriangulateLiepa),
+        {50, 100, 200, 400, 800, 2000});
+  sizes(benchmark::RegisterBenchmark("BM_TriangulateArea", BM_TriangulateArea),
+        {50, 100, 200, 400, 800});
+  sizes(
+      benchmark::RegisterBenchmark("BM_TriangulateMaxMinPlainLoop", BM_TriangulateMaxMinPlainLoop),
+      {100, 400});
+  sizes(benchmark::RegisterBenchmark("BM_RestrictedMaxMin", BM_RestrictedMaxMin),
+        {400, 800, 2000, 5000});
+  sizes(benchmark::RegisterBenchmark("BM_RestrictedLiepa", BM_RestrictedLiepa),
+        {400, 800, 2000, 5000});
+  return true;
+}();
 
 }  // namespace
 }  // namespace holefill::bench

@@ -64,6 +64,20 @@ void try_apex(const Weight& weight, const HolePolygon& polygon, int i, int m, in
   }
 }
 
+// Calls solve(weight) with the weight policy options.weight names (weights.h).
+template <class Solve>
+auto with_weight(const TriangulateOptions& options, Solve&& solve) {
+  switch (options.weight) {
+    case WeightKind::Liepa:
+      return solve(LiepaWeight{options.angle_tolerance});
+    case WeightKind::Area:
+      return solve(AreaWeight{});
+    case WeightKind::MaxMin:
+      break;
+  }
+  return solve(MaxMinWeight{options.angle_tolerance, options.fold_limit});
+}
+
 // Follows the apexes from the closing edge (0, n-1) down: the triangles of the solution.
 template <class ApexOf>
 std::vector<std::array<int, 3>> trace_triangles(int n, const ApexOf& apex_of) {

@@ -206,16 +206,8 @@ std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polyg
     if (auto restricted = triangulate_polygon_restricted(polygon, options)) return restricted;
   }
   if (polygon.points.size() > kMaxFullSearchEdges) return std::nullopt;
-  switch (options.weight) {
-    case WeightKind::MaxMin:
-      return solve(polygon, MaxMinWeight{options.angle_tolerance, options.fold_limit},
-                   options.prune);
-    case WeightKind::Liepa:
-      return solve(polygon, LiepaWeight{options.angle_tolerance}, options.prune);
-    case WeightKind::Area:
-      return solve(polygon, AreaWeight{}, options.prune);
-  }
-  return std::nullopt;
+  return detail::with_weight(
+      options, [&](const auto& weight) { return solve(polygon, weight, options.prune); });
 }
 
 }  // namespace holefill

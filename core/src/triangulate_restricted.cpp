@@ -140,16 +140,9 @@ std::optional<PolygonTriangulation> solve_restricted(const HolePolygon& polygon,
 std::optional<PolygonTriangulation> triangulate_polygon_restricted(
     const HolePolygon& polygon, const TriangulateOptions& options) {
   if (polygon.points.size() < 3) return std::nullopt;
-  switch (options.weight) {
-    case WeightKind::MaxMin:
-      return solve_restricted(polygon, MaxMinWeight{options.angle_tolerance, options.fold_limit},
-                              options.restricted);
-    case WeightKind::Liepa:
-      return solve_restricted(polygon, LiepaWeight{options.angle_tolerance}, options.restricted);
-    case WeightKind::Area:
-      return solve_restricted(polygon, AreaWeight{}, options.restricted);
-  }
-  return std::nullopt;
+  return detail::with_weight(options, [&](const auto& weight) {
+    return solve_restricted(polygon, weight, options.restricted);
+  });
 }
 
 }  // namespace holefill
