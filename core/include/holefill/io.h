@@ -1,8 +1,9 @@
 // Reading and writing meshes. OBJ, OFF, PLY (ASCII and binary) and STL (ASCII and binary) are
 // read by our own parsers, in double precision, into a list of polygons that is then checked and
 // repaired before it becomes a mesh: polygons are triangulated, faces flipped to agree with
-// their neighbours, exact duplicates and faces using a vertex twice dropped, and faces that would
-// make an edge or vertex non-manifold kept on their own copies of their corners. Every repair is
+// their neighbours, exact duplicates and faces using a vertex twice dropped, faces that would make
+// an edge non-manifold kept on their own copies of their corners, and a vertex where closed
+// surfaces touch split into one copy per surface. Every repair is
 // counted in a LoadReport; every refusal throws a FileError naming the file and the reason.
 // Writes are atomic (temporary file, then rename).
 #pragma once
@@ -20,6 +21,7 @@ struct LoadReport {
   std::size_t polygons_triangulated = 0;     // faces with more than 3 corners
   std::size_t degenerate_faces_dropped = 0;  // faces using a vertex twice, or with < 3 corners
   std::size_t faces_detached = 0;  // faces that would make an edge non-manifold, given own vertices
+  std::size_t vertices_split = 0;  // where closed surfaces touch: one copy per surface
   std::size_t faces_flipped = 0;   // turned over to agree with the orientation of their neighbours
   std::size_t duplicate_faces_dropped = 0;  // the same corners in the same order as a kept face
   std::size_t duplicate_positions = 0;      // vertices at exactly the position of an earlier vertex
