@@ -456,6 +456,7 @@ class PlyBody {
 
   // Where the reader is, for messages: set by the caller before each element record.
   void locate(const std::string& where) { where_ = where; }
+  const std::string& where() const { return where_; }
 
   double read(PlyType type) {
     if (encoding_ == PlyEncoding::Ascii) return read_text(type);
@@ -669,9 +670,9 @@ Soup parse_ply(std::string_view bytes, const fs::path& path) {
         const double count = body.read(property.count_type);
         if (count < 0.0 ||
             count > static_cast<double>(body.remaining() / body.smallest(property.type) + 1)) {
-          fail(path, "a list in the " + std::to_string(r) + "th '" + element.name +
-                         "' element claims " + std::to_string(static_cast<long long>(count)) +
-                         " items, more than the file holds (corrupt or truncated)");
+          fail(path, body.where() + ": a list claims " +
+                         std::to_string(static_cast<long long>(count)) +
+                         " items, more than the rest of the file holds (truncated or corrupt)");
         }
         for (long long item = 0; item < static_cast<long long>(count); ++item) {
           const double value = body.read(property.type);
