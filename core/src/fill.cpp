@@ -22,19 +22,20 @@ double timed(Work&& work) {
 }
 
 // ---- Triangle-triangle intersection
-// ---------------------------------------------------------------
+// --------------------------------------------------------------- Two triangles intersect when
+// their interiors meet, or an edge of one passes through the interior of the other; touching along
+// sides or at corners (a T-junction, a shared vertex) does not count.
 
 // Relative tolerances: a point this close to a plane (times the triangles' size) lies in it; a
-// direction this close to a wedge's side (as a sine) is not inside it.
+// point this close to a side (relative to the triangle's area) is on it, not inside.
 constexpr double kPlaneTolerance = 1e-10;
-constexpr double kWedgeTolerance = 1e-9;
+constexpr double kInsideTolerance = 1e-9;
 
 struct Triangle3 {
   std::array<Point, 3> corner;
   Point normal;  // unit
+  double size;   // longest edge
 };
-
-bool same_point(const Point& a, const Point& b) { return a == b; }
 
 // The two coordinates to keep when projecting onto the plane with this normal.
 std::pair<int, int> projection_axes(const Point& normal) {
@@ -48,51 +49,48 @@ struct Point2 {
   double x, y;
 };
 
+Point2 project(const Point& p, std::pair<int, int> axes) { return {p[axes.first], p[axes.second]}; }
+
 double cross2(const Point2& o, const Point2& a, const Point2& b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
-bool on_segment2(const Point2& p, const Point2& a, const Point2& b) {
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-         p.y <= std::max(a.y, b.y);
+bool strictly_inside2(const Point2& p, const Point2& a, const Point2& b, const Point2& c) {
+  const double area = cross2(a, b, c);
+  if (area == 0.0) return false;
+  const double sign = area > 0.0 ? 1.0 : -1.0, margin = kInsideTolerance * std::abs(area);
+  return sign * cross2(a, b, p) > margin && sign * cross2(b, c, p) > margin &&
+         sign * cross2(c, a, p) > margin;
 }
 
-// Closed 2D segments [a, b] and [c, d] meet.
-bool segments_meet2(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  const double d1 = cross2(c, d, a), d2 = cross2(c, d, b);
-  const double d3 = cross2(a, b, c), d4 = cross2(a, b, d);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
-    return true;
-  }
-  return (d1 == 0 && on_segment2(a, c, d)) || (d2 == 0 && on_segment2(b, c, d)) ||
-         (d3 == 0 && on_segment2(c, a, b)) || (d4 == 0 && on_segment2(d, a, b));
+// Segments [a, b] and [c, d] cross at a point inside both.
+bool cross_properly2(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  const double margin =
+      kInsideTolerance * std::hypot(b.x - a.x, b.y - a.y) * std::hypot(d.x - c.x, d.y - c.y);
+  auto opposite = [margin](double u, double v) {
+    return (u > margin && v < -margin) || (u < -margin && v > margin);
+  };
+  return opposite(cross2(c, d, a), cross2(c, d, b)) && opposite(cross2(a, b, c), cross2(a, b, d));
 }
 
-bool inside_triangle2(const Point2& p, const Point2& a, const Point2& b, const Point2& c) {
-  const double d1 = cross2(a, b, p), d2 = cross2(b, c, p), d3 = cross2(c, a, p);
-  const bool negative = d1 < 0 || d2 < 0 || d3<0, positive = d1> 0 || d2 > 0 || d3 > 0;
-  return !(negative && positive);
-}
-
-Point2 project(const Point& p, std::pair<int, int> axes) { return {p[axes.first], p[axes.second]}; }
-
-// The closed segment [s0, s1] meets the closed triangle.
-bool segment_meets_triangle(const Point& s0, const Point& s1, const Triangle3& t, double size) {
-  const Point& a = t.corner[0];
-  const double d0 = OpenMesh::dot(t.normal, s0 - a), d1 = OpenMesh::dot(t.normal, s1 - a);
-  const double tolerance = kPlaneTolerance * size;
+// The segment [s0, s1] passes through the triangle's interior.
+bool segment_enters_triangle(const Point& s0, const Point& s1, const Triangle3& t) {
+  const double d0 = OpenMesh::dot(t.normal, s0 - t.corner[0]);
+  const double d1 = OpenMesh::dot(t.normal, s1 - t.corner[0]);
+  const double tolerance = kPlaneTolerance * std::max(t.size, (s1 - s0).norm());
   if ((d0 > tolerance && d1 > tolerance) || (d0 < -tolerance && d1 < -tolerance)) return false;
   const auto axes = projection_axes(t.normal);
-  const Point2 a2 = project(t.corner[0], axes), b2 = project(t.corner[1], axes),
-               c2 = project(t.corner[2], axes);
+  const Point2 a = project(t.corner[0], axes), b = project(t.corner[1], axes),
+               c = project(t.corner[2], axes);
   if (std::abs(d0) <= tolerance && std::abs(d1) <= tolerance) {
     const Point2 p = project(s0, axes), q = project(s1, axes);
-    return inside_triangle2(p, a2, b2, c2) || inside_triangle2(q, a2, b2, c2) ||
-           segments_meet2(p, q, a2, b2) || segments_meet2(p, q, b2, c2) ||
-           segments_meet2(p, q, c2, a2);
+    const Point2 middle{(p.x + q.x) / 2, (p.y + q.y) / 2};
+    return strictly_inside2(p, a, b, c) || strictly_inside2(q, a, b, c) ||
+           strictly_inside2(middle, a, b, c) || cross_properly2(p, q, a, b) ||
+           cross_properly2(p, q, b, c) || cross_properly2(p, q, c, a);
   }
   const double along = std::clamp(d0 / (d0 - d1), 0.0, 1.0);
-  return inside_triangle2(project(s0 + along * (s1 - s0), axes), a2, b2, c2);
+  return strictly_inside2(project(s0 + along * (s1 - s0), axes), a, b, c);
 }
 
 // Direction u lies strictly inside the wedge spanned by v1 and v2 (an angle below pi), all in
@@ -103,21 +101,22 @@ bool inside_wedge(const Point& u, const Point& v1, const Point& v2, const Point&
     return length > 0.0 ? OpenMesh::dot(OpenMesh::cross(x, y), normal) / length : 0.0;
   };
   const double turn = sine(v1, v2) > 0.0 ? 1.0 : -1.0;
-  return turn * sine(v1, u) > kWedgeTolerance && turn * sine(u, v2) > kWedgeTolerance;
+  return turn * sine(v1, u) > kInsideTolerance && turn * sine(u, v2) > kInsideTolerance;
 }
 
-// Two non-degenerate triangles meet other than in the corners and edges they share (corners at
-// the same position count as shared).
+bool in_plane_of(const Triangle3& t, const Point& p, double size) {
+  return std::abs(OpenMesh::dot(t.normal, p - t.corner[0])) <= kPlaneTolerance * size;
+}
+
+Point centre(const Triangle3& t) { return (t.corner[0] + t.corner[1] + t.corner[2]) / 3.0; }
+
+// Two non-degenerate triangles intersect (corners at the same position count as shared).
 bool triangles_intersect(const Triangle3& t1, const Triangle3& t2) {
-  double size = 0.0;
-  for (const auto* t : {&t1, &t2}) {
-    for (int i = 0; i < 3; ++i)
-      size = std::max(size, (t->corner[i] - t->corner[(i + 1) % 3]).norm());
-  }
+  const double size = std::max(t1.size, t2.size);
   int shared_in_1[3], shared_in_2[3], shared = 0;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
-      if (same_point(t1.corner[i], t2.corner[j])) {
+      if (t1.corner[i] == t2.corner[j]) {
         shared_in_1[shared] = i;
         shared_in_2[shared++] = j;
         break;
@@ -125,43 +124,42 @@ bool triangles_intersect(const Triangle3& t1, const Triangle3& t2) {
     }
   }
   if (shared >= 3) return true;  // the same triangle twice
-  auto distance_to_plane_1 = [&](const Point& p) {
-    return OpenMesh::dot(t1.normal, p - t1.corner[0]);
-  };
-  const double tolerance = kPlaneTolerance * size;
   if (shared == 2) {
     // Meeting beyond the shared edge means folding onto each other in one plane.
     const Point& apex1 = t1.corner[3 - shared_in_1[0] - shared_in_1[1]];
     const Point& apex2 = t2.corner[3 - shared_in_2[0] - shared_in_2[1]];
-    if (std::abs(distance_to_plane_1(apex2)) > tolerance) return false;
+    if (!in_plane_of(t1, apex2, size)) return false;
     const Point& p = t1.corner[shared_in_1[0]];
     const Point& q = t1.corner[shared_in_1[1]];
-    const Point side1 = OpenMesh::cross(q - p, apex1 - p),
-                side2 = OpenMesh::cross(q - p, apex2 - p);
-    return OpenMesh::dot(side1, side2) > 0.0;
+    return OpenMesh::dot(OpenMesh::cross(q - p, apex1 - p), OpenMesh::cross(q - p, apex2 - p)) >
+           0.0;
   }
   if (shared == 1) {
     const int i = shared_in_1[0], j = shared_in_2[0];
     const Point& p = t1.corner[i];
     const Point &a = t1.corner[(i + 1) % 3], &b = t1.corner[(i + 2) % 3];
     const Point &c = t2.corner[(j + 1) % 3], &d = t2.corner[(j + 2) % 3];
-    const bool coplanar = std::abs(distance_to_plane_1(c)) <= tolerance &&
-                          std::abs(distance_to_plane_1(d)) <= tolerance;
-    if (coplanar) {
-      // Both lie in one plane: they overlap exactly when their wedges at p do.
+    if (in_plane_of(t1, c, size) && in_plane_of(t1, d, size)) {
+      // In one plane they overlap exactly when their wedges at p do.
       const Point& n = t1.normal;
       return inside_wedge(a - p, c - p, d - p, n) || inside_wedge(b - p, c - p, d - p, n) ||
-             inside_wedge(c - p, a - p, b - p, n) || inside_wedge(d - p, a - p, b - p, n) ||
-             segment_meets_triangle(a, b, t2, size) || segment_meets_triangle(c, d, t1, size);
+             inside_wedge(c - p, a - p, b - p, n) || inside_wedge(d - p, a - p, b - p, n);
     }
-    // Otherwise they share a segment from p only if an edge opposite p crosses the other.
-    return segment_meets_triangle(a, b, t2, size) || segment_meets_triangle(c, d, t1, size);
+    return segment_enters_triangle(a, b, t2) || segment_enters_triangle(c, d, t1) ||
+           segment_enters_triangle(p, a, t2) || segment_enters_triangle(p, b, t2) ||
+           segment_enters_triangle(p, c, t1) || segment_enters_triangle(p, d, t1);
   }
   for (int i = 0; i < 3; ++i) {
-    if (segment_meets_triangle(t1.corner[i], t1.corner[(i + 1) % 3], t2, size) ||
-        segment_meets_triangle(t2.corner[i], t2.corner[(i + 1) % 3], t1, size)) {
+    if (segment_enters_triangle(t1.corner[i], t1.corner[(i + 1) % 3], t2) ||
+        segment_enters_triangle(t2.corner[i], t2.corner[(i + 1) % 3], t1)) {
       return true;
     }
+  }
+  // In one plane, one may lie inside the other with no side crossing a side.
+  if (in_plane_of(t1, t2.corner[0], size) && in_plane_of(t1, t2.corner[1], size) &&
+      in_plane_of(t1, t2.corner[2], size)) {
+    return segment_enters_triangle(centre(t1), centre(t1), t2) ||
+           segment_enters_triangle(centre(t2), centre(t2), t1);
   }
   return false;
 }
@@ -196,6 +194,8 @@ std::optional<Triangle3> triangle_of(const Mesh& mesh, FaceHandle face) {
     return std::nullopt;
   }
   t.normal = OpenMesh::cross(t.corner[1] - t.corner[0], t.corner[2] - t.corner[0]).normalized();
+  t.size = std::max({(t.corner[1] - t.corner[0]).norm(), (t.corner[2] - t.corner[1]).norm(),
+                     (t.corner[0] - t.corner[2]).norm()});
   return t;
 }
 

@@ -1,5 +1,7 @@
 #include <algorithm>
+#include <array>
 #include <new>
+#include <optional>
 #include <unordered_map>
 
 #include "holefill/triangulate.h"
@@ -46,6 +48,23 @@ bool is_back_of_lone_triangle(const Mesh& mesh, const Hole& hole) {
          face == mesh.opposite_face_handle(hole.halfedges[2]);
 }
 
+// Two different vertices of the loop at exactly the same position, if any.
+std::optional<std::pair<int, int>> coincident_vertices(const Mesh& mesh, const Hole& hole) {
+  std::vector<std::pair<std::array<double, 3>, int>> at;
+  for (const auto v : hole.vertices) {
+    const Point& p = mesh.point(v);
+    at.push_back({{p[0], p[1], p[2]}, v.idx()});
+  }
+  std::sort(at.begin(), at.end());
+  for (std::size_t i = 1; i < at.size(); ++i) {
+    if (at[i].first == at[i - 1].first && at[i].second != at[i - 1].second) {
+      return std::pair<int, int>(std::min(at[i].second, at[i - 1].second),
+                                 std::max(at[i].second, at[i - 1].second));
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
@@ -72,6 +91,14 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
                        " (a pinched hole); filling it would leave a non-manifold vertex";
       return result;
     }
+  }
+  if (const auto twins = coincident_vertices(mesh, hole)) {
+    result.failure = "its boundary passes twice through one position (vertices " +
+                     std::to_string(twins->first + 1) + " and " +
+                     std::to_string(twins->second + 1) +
+                     " lie at the same place): a zero-width crack or an unwelded seam, which a "
+                     "patch could only cover with triangles of zero width";
+    return result;
   }
   if (is_back_of_lone_triangle(mesh, hole)) {
     result.failure = "it is the back of a lone triangle (face " +

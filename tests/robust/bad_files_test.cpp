@@ -23,18 +23,6 @@ const fs::path kData = HOLEFILL_TEST_DATA_DIR;
 const std::vector<Point> kTetraPoints{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 const std::vector<std::vector<int>> kTetraFaces{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
 
-std::string obj_text(const std::vector<Point>& points, const std::vector<std::vector<int>>& faces) {
-  std::ostringstream text;
-  text.precision(17);
-  for (const auto& p : points) text << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  for (const auto& f : faces) {
-    text << 'f';
-    for (const int c : f) text << ' ' << c + 1;
-    text << '\n';
-  }
-  return text.str();
-}
-
 std::string off_text(const std::vector<Point>& points, const std::vector<std::vector<int>>& faces) {
   std::ostringstream text;
   text.precision(17);

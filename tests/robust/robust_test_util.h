@@ -15,6 +15,37 @@
 
 namespace holefill::testing {
 
+// Vertices and faces as a file lists them, before any repair.
+struct Soup {
+  std::vector<Point> points;
+  std::vector<std::vector<int>> faces;
+};
+
+inline Soup soup_of(const Mesh& mesh) {
+  Soup soup;
+  for (const auto v : mesh.vertices()) soup.points.push_back(mesh.point(v));
+  for (const auto f : mesh.faces()) {
+    soup.faces.emplace_back();
+    for (const auto v : mesh.fv_range(f)) soup.faces.back().push_back(v.idx());
+  }
+  return soup;
+}
+
+inline std::string obj_text(const std::vector<Point>& points,
+                            const std::vector<std::vector<int>>& faces) {
+  std::ostringstream text;
+  text.precision(17);
+  for (const auto& p : points) text << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  for (const auto& f : faces) {
+    text << 'f';
+    for (const int c : f) text << ' ' << c + 1;
+    text << '\n';
+  }
+  return text.str();
+}
+
+inline std::string obj_text(const Soup& soup) { return obj_text(soup.points, soup.faces); }
+
 struct CliRun {
   int code;
   std::string out, err;
