@@ -1,0 +1,170 @@
+// Self-intersections (issue #5): a patch that must cross the mesh is filled and reported for its
+// hole; where there is room for a valid patch, the fill makes none, and a stage that would make
+// one is undone.
+#include <cmath>
+
+#include "fill_guarantees.h"
+#include "holefill/fill.h"
+#include "holefill/holes.h"
+#include "holefill/io.h"
+#include "robust_test_util.h"
+#include "test_meshes.h"
+
+namespace holefill::testing {
+namespace {
+
+// Adds a closed tetrahedron with corners at the given points.
+void add_tetrahedron(Mesh& mesh, const std::array<Point, 4>& p) {
+  VertexHandle v[4];
+  for (int i = 0; i < 4; ++i) v[i] = mesh.add_vertex(p[i]);
+  // Orient outwards whatever the corners' order.
+  const bool outward = OpenMesh::dot(OpenMesh::cross(p[1] - p[0], p[2] - p[0]), p[3] - p[0]) < 0.0;
+  const int a = outward ? 1 : 2, b = outward ? 2 : 1;
+  mesh.add_face(v[0], v[a], v[b]);
+  mesh.add_face(v[0], v[3], v[a]);
+  mesh.add_face(v[0], v[b], v[3]);
+  mesh.add_face(v[a], v[3], v[b]);
+}
+
+// A patch made of the given faces of `mesh`.
+Patch patch_of(const std::vector<FaceHandle>& faces) {
+  Patch patch;
+  patch.faces = faces;
+  patch.stage = Stage::Triangulated;
+  return patch;
+}
+
+// The base triangle (0,0,0) (2,0,0) (0,2,0) and one other; the other is the patch.
+std::size_t intersections_with_base(const std::array<Point, 3>& other, bool share_corner = false) {
+  Mesh mesh;
+  const auto a = mesh.add_vertex({0, 0, 0}), b = mesh.add_vertex({2, 0, 0}),
+             c = mesh.add_vertex({0, 2, 0});
+  mesh.add_face(a, b, c);
+  VertexHandle v[3];
+  for (int i = 0; i < 3; ++i) {
+    v[i] = share_corner && other[i] == Point(0, 0, 0) ? a : mesh.add_vertex(other[i]);
+  }
+  return count_patch_intersections(mesh, patch_of({mesh.add_face(v[0], v[1], v[2])}));
+}
+
+TEST(PatchIntersections, CountsCrossingsButNotTouching) {
+  // Through the base's interior.
+  EXPECT_EQ(intersections_with_base({Point(0.5, 0.5, -1), Point(0.5, 0.5, 1), Point(-1, 3, 0)}),
+            1u);
+  // Standing on the base's side: touches it along a segment.
+  EXPECT_EQ(intersections_with_base({Point(0.5, 0, 0), Point(1, -1, 0.5), Point(1.5, 0, 0)}), 0u);
+  // A corner resting on the base's interior: the interiors meet at that point.
+  EXPECT_EQ(intersections_with_base({Point(0.5, 0.5, 0), Point(1, 1, 1), Point(0, 1, 1)}), 1u);
+  // Sharing the base's corner and leaning away from it.
+  EXPECT_EQ(intersections_with_base({Point(0, 0, 0), Point(-1, 0, 1), Point(-1, 1, 1)}, true), 0u);
+  // Sharing the corner and folded down into the base's plane, over it.
+  EXPECT_EQ(intersections_with_base({Point(0, 0, 0), Point(1, 0.2, 0), Point(0.2, 1, 0)}, true),
+            1u);
+  // In the base's plane beside it, sharing the corner.
+  EXPECT_EQ(intersections_with_base({Point(0, 0, 0), Point(-1, -0.2, 0), Point(-0.2, -1, 0)}, true),
+            0u);
+  // Lying inside the base, in its plane.
+  EXPECT_EQ(intersections_with_base({Point(0.2, 0.2, 0), Point(0.2, 0.8, 0), Point(0.8, 0.2, 0)}),
+            1u);
+  // Parallel to it, just above.
+  EXPECT_EQ(intersections_with_base(
+                {Point(0.2, 0.2, 1e-6), Point(0.8, 0.2, 1e-6), Point(0.2, 0.8, 1e-6)}),
+            0u);
+}
+
+// A bumpy terrain with a round hole in the middle.
+Mesh terrain_with_hole() {
+  return without_faces(
+      make_grid(16, [](double x, double y) { return 0.05 * std::sin(3 * x) * std::cos(2 * y); }),
+      [](const Point& c) { return std::hypot(c[0] - 0.5, c[1] - 0.5) < 0.25; });
+}
+
+TEST(PatchIntersections, AForcedIntersectionIsFilledAndReportedForItsHole) {
+  Mesh before = terrain_with_hole();
+  // A pin standing through the middle of the hole: any patch across the hole must cross it.
+  add_tetrahedron(before, {Point(0.5, 0.5, -0.5), Point(0.52, 0.5, 0.5), Point(0.48, 0.52, 0.5),
+                           Point(0.48, 0.48, 0.5)});
+  const auto holes = find_holes(before);
+  ASSERT_EQ(holes.size(), 2u);
+  Mesh mesh = before;
+  HoleSelection inner;
+  inner.hole_ids = {1};
+  const auto fills = fill_holes(mesh, holes, {}, inner);
+  ASSERT_EQ(fills.size(), 1u);
+  EXPECT_FALSE(fills[0].failed()) << fills[0].failure;
+  EXPECT_GT(fills[0].self_intersections, 0u);
+  EXPECT_EQ(fills[0].self_intersections, count_patch_intersections(mesh, fills[0].patch));
+  EXPECT_EQ(check_fill_guarantees(before, holes, mesh, fills), "");
+}
+
+TEST(PatchIntersections, TheCliSaysWhichHoleIntersectsAndExitsWithFive) {
+  Mesh mesh = terrain_with_hole();
+  add_tetrahedron(mesh, {Point(0.5, 0.5, -0.5), Point(0.52, 0.5, 0.5), Point(0.48, 0.52, 0.5),
+                         Point(0.48, 0.48, 0.5)});
+  const auto dir = std::filesystem::temp_directory_path() / "holefill_robust_cli_intersections";
+  std::filesystem::create_directories(dir);
+  save_mesh(mesh, dir / "pin.obj");
+  const CliRun run = run_cli({"fill", (dir / "pin.obj").string(), "-o", (dir / "out.obj").string(),
+                              "--holes", "1", "--report", (dir / "report.json").string()});
+  EXPECT_EQ(run.code, cli::kPatchesIntersect) << run.err;
+  EXPECT_NE(run.err.find("hole 1: the patch intersects the mesh"), std::string::npos) << run.err;
+  std::ifstream report(dir / "report.json");
+  const std::string json((std::istreambuf_iterator<char>(report)),
+                         std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("\"self_intersections\": "), std::string::npos);
+  EXPECT_EQ(json.find("\"self_intersections\": 0"), std::string::npos) << json;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PatchIntersections, NoneWhereThereIsRoomForAValidPatch) {
+  for (const char* asset : {"bunny.obj", "sphere.obj", "heart.obj", "torus.obj"}) {
+    const Mesh before = load_mesh(std::filesystem::path(HOLEFILL_ASSETS_DIR) / asset);
+    const auto holes = find_holes(before);
+    for (const auto method : {SmoothMethod::Umbrella, SmoothMethod::Fair}) {
+      Mesh mesh = before;
+      FillOptions options;
+      options.smooth.method = method;
+      const auto fills = fill_holes(mesh, holes, options);
+      for (const auto& fill : fills) {
+        EXPECT_FALSE(fill.failed()) << asset << ": " << fill.failure;
+        EXPECT_EQ(fill.self_intersections, 0u) << asset << " hole " << fill.hole_id;
+      }
+      EXPECT_EQ(check_fill_guarantees(before, holes, mesh, fills), "") << asset;
+    }
+  }
+}
+
+TEST(PatchIntersections, SmoothingThatWouldCrossTheMeshIsUndone) {
+  // A sphere without its top cap, and a small closed body inside it just under where the cap
+  // was: the flat triangulated and refined patch passes below the body, but fairing bulges the
+  // patch up along the sphere, through it.
+  Mesh before = without_faces(make_icosphere(3), [](const Point& c) { return c[2] > 0.7; });
+  add_tetrahedron(before, {Point(0, 0, 0.8), Point(0.05, 0, 0.99), Point(-0.03, 0.04, 0.99),
+                           Point(-0.03, -0.04, 0.99)});
+  const auto holes = find_holes(before);
+  ASSERT_EQ(holes.size(), 1u);
+  FillOptions options;
+  options.smooth.method = SmoothMethod::Fair;
+  Mesh unguarded = before;
+  options.last_stage = Stage::Refined;
+  HoleFill refined = fill_hole(unguarded, holes[0], options);
+  ASSERT_EQ(refined.self_intersections, 0u);
+  // Fairing on its own would cross the body.
+  ASSERT_TRUE(fair_patch(unguarded, refined.patch, options.smooth.fair).solved);
+  ASSERT_GT(count_patch_intersections(unguarded, refined.patch), 0u);
+
+  Mesh mesh = before;
+  options.last_stage = Stage::Smoothed;
+  const auto fills = fill_holes(mesh, holes, options);
+  ASSERT_EQ(fills.size(), 1u);
+  EXPECT_EQ(fills[0].stage(), Stage::Smoothed);
+  EXPECT_EQ(fills[0].self_intersections, 0u);
+  EXPECT_NE(fills[0].smoothing_note.find("smoothing undone: it made the patch intersect the mesh"),
+            std::string::npos)
+      << fills[0].smoothing_note;
+  EXPECT_EQ(count_patch_intersections(mesh, fills[0].patch), 0u);
+  EXPECT_EQ(check_fill_guarantees(before, holes, mesh, fills), "");
+}
+
+}  // namespace
+}  // namespace holefill::testing
