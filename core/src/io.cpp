@@ -576,6 +576,9 @@ Soup parse_ply(std::string_view bytes, const fs::path& path) {
         fail(path, where + "an element needs a name and a count, got " + quoted(line));
       }
       element.count = static_cast<unsigned long long>(count);
+      if (!take_token(rest).empty()) {
+        fail(path, where + "unexpected text after the element count in " + quoted(line));
+      }
       elements.push_back(std::move(element));
     } else if (keyword == "property") {
       if (elements.empty()) fail(path, where + "a property before any element");
@@ -594,6 +597,9 @@ Soup parse_ply(std::string_view bytes, const fs::path& path) {
       }
       property.name = std::string(take_token(rest));
       if (property.name.empty()) fail(path, where + "a property needs a name");
+      if (!take_token(rest).empty()) {
+        fail(path, where + "unexpected text after the property name in " + quoted(line));
+      }
       elements.back().properties.push_back(std::move(property));
     } else if (keyword == "end_header") {
       ended = true;
@@ -615,7 +621,11 @@ Soup parse_ply(std::string_view bytes, const fs::path& path) {
     for (const auto& property : element.properties) {
       record += body.smallest(property.is_list ? property.count_type : property.type);
     }
-    if (record == 0) continue;
+    if (record == 0) {
+      if (element.count == 0) continue;
+      fail(path, "the header gives the '" + element.name + "' element " +
+                     std::to_string(element.count) + " records but no properties (corrupt header)");
+    }
     if (element.count > (body.remaining() + 1) / record ||
         (least_bytes += element.count * record) > body.remaining() + 1) {
       fail(path, "the header promises " + std::to_string(element.count) + " '" + element.name +

@@ -288,6 +288,15 @@ TEST_F(BadFiles, HugeHeaderCountsAreRefusedWithoutAllocatingForThem) {
                        "property float x\nproperty float y\nproperty float z\nend_header\n" +
                            std::string(24, '\0')),
                  "the header promises 4294967295 'vertex' elements");
+  // Found by fuzzing: four billion empty faces took minutes and gigabytes.
+  expect_refused(write("empty_records.ply",
+                       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                       "property float y\nproperty float z\nelement face 4294967295\n"
+                       "end_header\n0 0 0\n1 0 0\n0 1 0\n"),
+                 "the header gives the 'face' element 4294967295 records but no properties");
+  expect_refused(write("count_garbage.ply",
+                       "ply\nformat ascii 1.0\nelement vertex 3 list uchar int x\nend_header\n"),
+                 "unexpected text after the element count");
   std::string list = binary_ply(kTetraPoints, {{0, 1, 2}}, false);
   list[list.size() - 4 * 3 - 4 - 1] = static_cast<char>(250);  // a face claiming 250 corners
   expect_refused(write("huge_list.ply", list), "a list claims 250 items");
