@@ -199,6 +199,108 @@ std::optional<Triangle3> triangle_of(const Mesh& mesh, FaceHandle face) {
   return t;
 }
 
+// Boxes of a mesh's faces in a uniform grid, so that the faces near a patch are found without
+// scanning the whole mesh for every stage of every hole.
+class FaceIndex {
+ public:
+  explicit FaceIndex(const Mesh& mesh) {
+    double extent = 0.0;
+    std::size_t count = 0;
+    std::vector<std::pair<int, Box>> boxes;
+    for (const auto f : mesh.faces()) {
+      const Box box = box_of(mesh, f);
+      boxes.emplace_back(f.idx(), box);
+      extent += (box.high - box.low).max();
+      ++count;
+    }
+    cell_ = count && extent > 0.0 ? 2.0 * extent / static_cast<double>(count) : 1.0;
+    for (const auto& [face, box] : boxes) {
+      if (!place(face, box)) large_.emplace_back(face, box);
+    }
+    std::sort(cells_.begin(), cells_.end());
+  }
+
+  // A face added after the index was built (a finished patch's).
+  void add(const Mesh& mesh, FaceHandle face) {
+    added_.emplace_back(face.idx(), box_of(mesh, face));
+  }
+
+  // The faces whose boxes overlap `box`; nothing when that box covers too many cells to look
+  // up one by one (then the caller scans the mesh).
+  std::optional<std::vector<int>> near(const Box& box) const {
+    std::array<std::int64_t, 3> low, high;
+    double cells = 1.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      low[axis] = cell_index(box.low[axis]);
+      high[axis] = cell_index(box.high[axis]);
+      cells *= static_cast<double>(high[axis] - low[axis] + 1);
+    }
+    if (!(cells <= kMaxCellsPerLookup)) return std::nullopt;
+    std::vector<int> faces;
+    for (auto x = low[0]; x <= high[0]; ++x) {
+      for (auto y = low[1]; y <= high[1]; ++y) {
+        for (auto z = low[2]; z <= high[2]; ++z) {
+          const std::uint64_t key = key_of(x, y, z);
+          auto at = std::lower_bound(cells_.begin(), cells_.end(),
+                                     std::pair<std::uint64_t, int>(key, -1));
+          for (; at != cells_.end() && at->first == key; ++at) faces.push_back(at->second);
+        }
+      }
+    }
+    for (const auto* list : {&large_, &added_}) {
+      for (const auto& [face, face_box] : *list) {
+        if (face_box.overlaps(box)) faces.push_back(face);
+      }
+    }
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    return faces;
+  }
+
+  static Box box_of(const Mesh& mesh, FaceHandle face) {
+    Box box;
+    for (const auto v : mesh.fv_range(face)) box.add(mesh.point(v));
+    return box;
+  }
+
+ private:
+  static constexpr double kMaxCellsPerFace = 64, kMaxCellsPerLookup = 1 << 20;
+
+  std::int64_t cell_index(double x) const {
+    return static_cast<std::int64_t>(std::floor(std::clamp(x / cell_, -1e15, 1e15)));
+  }
+  static std::uint64_t key_of(std::int64_t x, std::int64_t y, std::int64_t z) {
+    // 21 bits per axis; distant cells may share a key, which only adds candidates.
+    auto bits = [](std::int64_t i) { return static_cast<std::uint64_t>(i) & 0x1FFFFF; };
+    return bits(x) << 42 | bits(y) << 21 | bits(z);
+  }
+  // Files the face under every cell its box touches; false when that is too many.
+  bool place(int face, const Box& box) {
+    std::array<std::int64_t, 3> low, high;
+    double cells = 1.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      low[axis] = cell_index(box.low[axis]);
+      high[axis] = cell_index(box.high[axis]);
+      cells *= static_cast<double>(high[axis] - low[axis] + 1);
+    }
+    if (!(cells <= kMaxCellsPerFace)) return false;
+    for (auto x = low[0]; x <= high[0]; ++x) {
+      for (auto y = low[1]; y <= high[1]; ++y) {
+        for (auto z = low[2]; z <= high[2]; ++z) cells_.emplace_back(key_of(x, y, z), face);
+      }
+    }
+    return true;
+  }
+
+  double cell_ = 1.0;
+  std::vector<std::pair<std::uint64_t, int>> cells_;  // sorted by cell
+  std::vector<std::pair<int, Box>> large_, added_;
+};
+
+// The pairs count_patch_intersections counts; `index` (when given) holds every face of the mesh
+// but the patch's, so that only faces near the patch are looked at.
+std::size_t count_intersections(const Mesh& mesh, const Patch& patch, const FaceIndex* index);
+
 // ---- Undoing a stage
 // --------------------------------------------------------------------------------
 
@@ -311,18 +413,20 @@ void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options) {
 
 // Why a finished stage must be undone: it made a degenerate triangle, or it made a patch that
 // did not intersect the mesh intersect it. Empty when the stage may stay.
-std::string stage_problem(const Mesh& mesh, const HoleFill& fill, std::size_t& intersections) {
+std::string stage_problem(const Mesh& mesh, const HoleFill& fill, const FaceIndex* index,
+                          std::size_t& intersections) {
   if (has_degenerate_face(mesh, fill.patch)) return "it made a degenerate (zero-area) triangle";
-  intersections = count_patch_intersections(mesh, fill.patch);
+  intersections = count_intersections(mesh, fill.patch, index);
   if (fill.self_intersections == 0 && intersections > 0) {
     return "it made the patch intersect the mesh";
   }
   return {};
 }
 
-// advance(), with the triangulation already planned when `plan` is given.
+// advance(), with the triangulation already planned when `plan` is given, and the faces outside
+// the patch indexed when `index` is.
 bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options,
-                  const PlannedTriangulation* plan) {
+                  const PlannedTriangulation* plan, const FaceIndex* index) {
   fill.hole_id = hole.id;
   fill.boundary_edges = hole.size();
   if (fill.failed()) return false;
@@ -338,7 +442,7 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
         return false;
       }
       fill.patch = std::move(*result.patch);
-      fill.self_intersections = count_patch_intersections(mesh, fill.patch);
+      fill.self_intersections = count_intersections(mesh, fill.patch, index);
       break;
     }
     case Stage::Triangulated: {
@@ -348,7 +452,7 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
       fill.times.refine_seconds = timed([&] {
         try {
           fill.refinement = refine_patch(mesh, fill.patch, options.refine);
-          problem = stage_problem(mesh, fill, intersections);
+          problem = stage_problem(mesh, fill, index, intersections);
         } catch (const std::bad_alloc&) {
           problem = "not enough memory";
         }
@@ -370,7 +474,7 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
       std::size_t intersections = 0;
       fill.times.smooth_seconds = timed([&] {
         smooth(mesh, fill, options.smooth);
-        problem = stage_problem(mesh, fill, intersections);
+        problem = stage_problem(mesh, fill, index, intersections);
       });
       if (!problem.empty()) {
         for (std::size_t i = 0; i < positions.size(); ++i) {
@@ -392,16 +496,19 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
 }
 
 HoleFill fill_planned(Mesh& mesh, const Hole& hole, const FillOptions& options,
-                      const PlannedTriangulation* plan) {
+                      const PlannedTriangulation* plan, const FaceIndex* index) {
   HoleFill fill;
-  while (fill.stage() < options.last_stage && advance_with(mesh, hole, fill, options, plan)) {
+  while (fill.stage() < options.last_stage &&
+         advance_with(mesh, hole, fill, options, plan, index)) {
   }
   return fill;
 }
 
 }  // namespace
 
-std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch) {
+namespace {
+
+std::size_t count_intersections(const Mesh& mesh, const Patch& patch, const FaceIndex* index) {
   if (patch.faces.empty()) return 0;
   std::vector<Triangle3> patch_triangles;
   std::vector<Box> patch_boxes;
@@ -431,11 +538,19 @@ std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch) {
     int patch_index;  // -1 for a face outside the patch
   };
   std::vector<Other> others;
-  for (const auto f : mesh.faces()) {
-    Box box;
-    for (const auto v : mesh.fv_range(f)) box.add(mesh.point(v));
-    if (!box.overlaps(reach)) continue;
+  auto consider = [&](FaceHandle f) {
+    const Box box = FaceIndex::box_of(mesh, f);
+    if (!box.overlaps(reach)) return;
     if (const auto t = triangle_of(mesh, f)) others.push_back({*t, box, is_patch[f.idx()]});
+  };
+  const auto near = index ? index->near(reach) : std::nullopt;
+  if (near) {
+    for (const int f : *near) {
+      if (is_patch[f] < 0) consider(FaceHandle(f));
+    }
+    for (const auto f : patch.faces) consider(f);
+  } else {
+    for (const auto f : mesh.faces()) consider(f);
   }
   const Point extent = reach.high - reach.low;
   const double cells_per_axis =
@@ -487,12 +602,18 @@ std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch) {
   return pairs;
 }
 
+}  // namespace
+
+std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch) {
+  return count_intersections(mesh, patch, nullptr);
+}
+
 bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options) {
-  return advance_with(mesh, hole, fill, options, nullptr);
+  return advance_with(mesh, hole, fill, options, nullptr, nullptr);
 }
 
 HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options) {
-  return fill_planned(mesh, hole, options, nullptr);
+  return fill_planned(mesh, hole, options, nullptr, nullptr);
 }
 
 bool HoleSelection::includes(const Hole& hole) const {
@@ -524,10 +645,13 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
   worker();
   for (auto& thread : pool) thread.join();
 
+  // Patches are checked against the faces near them; each finished patch joins those faces.
+  FaceIndex index(mesh);
   std::vector<HoleFill> fills;
   for (std::size_t i = 0; i < chosen.size(); ++i) {
-    fills.push_back(fill_planned(mesh, *chosen[i], options, &plans[i]));
+    fills.push_back(fill_planned(mesh, *chosen[i], options, &plans[i], &index));
     fills.back().times.triangulate_seconds += plan_seconds[i];
+    for (const auto f : fills.back().patch.faces) index.add(mesh, f);
   }
   return fills;
 }
