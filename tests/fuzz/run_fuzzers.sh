@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang in build-fuzz/ (FUZZ_BUILD_DIR) and runs each for a
-# bounded time, SECONDS_EACH (default 60), on its corpus in tests/fuzz/corpus/<target>. Inputs
-# that reach new code are merged into that corpus (kept small); a crash is written to
-# tests/fuzz/regressions/<target>-<hash>, where the regression test (tests/robust) replays it.
+# bounded time, SECONDS_EACH (default 60), from its hand-written seeds (tests/fuzz/seeds/<target>)
+# and its corpus (tests/fuzz/corpus/<target>). A crash or timeout is written to
+# tests/fuzz/regressions/<target>-<kind>-<hash>, where the regression test (tests/robust) replays
+# it with the rest of the corpus.
 # Usage: tests/fuzz/run_fuzzers.sh [SECONDS_EACH] [TARGET...]   targets: load_obj load_off
-# load_ply load_stl fill (all by default). Needs clang (apt-get install clang).
+# load_ply load_stl fill (all by default). Needs clang (apt-get install clang). After each run
+# the corpus is reduced to a small set of inputs that still reaches every line reached so far.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-60}
@@ -27,7 +29,13 @@ for target in "${targets[@]}"; do
   echo "fuzz: $target for ${seconds}s"
   "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -max_len=4096 -timeout=20 \
     -rss_limit_mb=2048 -dict=tests/fuzz/formats.dict -print_final_stats=1 \
-    -artifact_prefix="tests/fuzz/regressions/$target-" "$fresh" "$corpus" || status=1
-  "$build/tests/fuzz/fuzz_$target" -merge=1 -max_len=4096 "$corpus" "$fresh" 2>/dev/null
+    -artifact_prefix="tests/fuzz/regressions/$target-" "$fresh" "$corpus" \
+    "tests/fuzz/seeds/$target" || status=1
+  minimal=$build/fuzz-minimal/$target
+  rm -rf "$minimal" && mkdir -p "$minimal"
+  # Edges only (no hit counts): a few hundred inputs instead of thousands.
+  "$build/tests/fuzz/fuzz_$target" -merge=1 -use_counters=0 -max_len=4096 "$minimal" \
+    "$corpus" "$fresh" 2>/dev/null
+  rm -rf "$corpus" "$fresh" && mv "$minimal" "$corpus"
 done
 exit $status

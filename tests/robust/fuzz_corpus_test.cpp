@@ -1,6 +1,7 @@
-// Replays every input of the fuzz corpus and every crash the fuzzers found
-// (tests/fuzz/corpus/<target>/, tests/fuzz/regressions/<target>-*) through the same checks the
-// libFuzzer targets make, so that a fixed crash stays fixed without clang or libFuzzer.
+// Replays every seed and corpus input of the fuzzers and every crash they found
+// (tests/fuzz/seeds/<target>/, tests/fuzz/corpus/<target>/, tests/fuzz/regressions/<target>-*)
+// through the same checks the libFuzzer targets make, so that a fixed crash stays fixed without
+// clang or libFuzzer.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -22,11 +23,12 @@ std::string read_bytes(const fs::path& path) {
   return bytes.str();
 }
 
-// The inputs of one target: its corpus and its regressions.
+// The inputs of one target: its seeds, its corpus and its regressions.
 std::vector<fs::path> inputs_of(const std::string& target) {
   std::vector<fs::path> inputs;
-  if (fs::is_directory(kFuzz / "corpus" / target)) {
-    for (const auto& entry : fs::directory_iterator(kFuzz / "corpus" / target)) {
+  for (const char* folder : {"seeds", "corpus"}) {
+    if (!fs::is_directory(kFuzz / folder / target)) continue;
+    for (const auto& entry : fs::directory_iterator(kFuzz / folder / target)) {
       inputs.push_back(entry.path());
     }
   }
