@@ -246,8 +246,8 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
   std::size_t filled = 0, intersecting = 0;
   for (const auto& fill : fills) {
     const auto& s = fill.stats;
-    const double seconds =
-        fill.times.triangulate_seconds + fill.times.refine_seconds + fill.times.smooth_seconds;
+    const double seconds = fill.times.triangulate_seconds + fill.times.refine_seconds +
+                           fill.times.smooth_seconds + fill.times.check_seconds;
     out << std::setw(6) << fill.hole_id << std::setw(10) << fill.boundary_edges << "  " << std::left
         << std::setw(13) << (fill.failed() ? "FAILED" : to_string(fill.stage())) << std::right
         << std::setw(7) << s.new_vertices << std::setw(8) << s.new_faces << std::setw(11)

@@ -63,7 +63,8 @@ void write_fill(const HoleFill& fill, std::ostream& out) {
   }
   out << "},\n     \"seconds\": {\"triangulate\": " << number(fill.times.triangulate_seconds)
       << ", \"refine\": " << number(fill.times.refine_seconds)
-      << ", \"smooth\": " << number(fill.times.smooth_seconds) << "}}";
+      << ", \"smooth\": " << number(fill.times.smooth_seconds)
+      << ", \"checks\": " << number(fill.times.check_seconds) << "}}";
 }
 
 }  // namespace

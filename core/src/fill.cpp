@@ -5,11 +5,9 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <new>
 #include <optional>
 #include <thread>
-#include <unordered_map>
 
 namespace holefill {
 namespace {
@@ -442,7 +440,8 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
         return false;
       }
       fill.patch = std::move(*result.patch);
-      fill.self_intersections = count_intersections(mesh, fill.patch, index);
+      fill.times.check_seconds +=
+          timed([&] { fill.self_intersections = count_intersections(mesh, fill.patch, index); });
       break;
     }
     case Stage::Triangulated: {
@@ -452,11 +451,14 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
       fill.times.refine_seconds = timed([&] {
         try {
           fill.refinement = refine_patch(mesh, fill.patch, options.refine);
-          problem = stage_problem(mesh, fill, index, intersections);
         } catch (const std::bad_alloc&) {
           problem = "not enough memory";
         }
       });
+      if (problem.empty()) {
+        fill.times.check_seconds +=
+            timed([&] { problem = stage_problem(mesh, fill, index, intersections); });
+      }
       if (!problem.empty()) {
         undo.undo(mesh, fill.patch);
         fill.refinement = RefineResult{};
@@ -472,10 +474,9 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
       for (const auto v : fill.patch.new_vertices) positions.push_back(mesh.point(v));
       std::string problem;
       std::size_t intersections = 0;
-      fill.times.smooth_seconds = timed([&] {
-        smooth(mesh, fill, options.smooth);
-        problem = stage_problem(mesh, fill, index, intersections);
-      });
+      fill.times.smooth_seconds = timed([&] { smooth(mesh, fill, options.smooth); });
+      fill.times.check_seconds +=
+          timed([&] { problem = stage_problem(mesh, fill, index, intersections); });
       if (!problem.empty()) {
         for (std::size_t i = 0; i < positions.size(); ++i) {
           mesh.set_point(fill.patch.new_vertices[i], positions[i]);

@@ -208,9 +208,9 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) 
       }
       line = joined;
     }
-    std::string_view rest = line;
+    std::string_view rest = line.substr(0, line.find('#'));  // comments run to the line's end
     const std::string_view keyword = take_token(rest);
-    if (keyword.empty() || keyword.front() == '#') continue;
+    if (keyword.empty()) continue;
     if (keyword == "v") {
       Point p;
       for (int axis = 0; axis < 3; ++axis) {

@@ -311,6 +311,11 @@ TEST_F(BadFiles, IndicesOutOfRangeAreRefused) {
   expect_refused(write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"), "vertex index 0");
   expect_refused(write("relative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n"),
                  "reaches before the first vertex");
+  LoadReport report;
+  EXPECT_EQ(load_mesh(write("comments.obj", "v 0 0 0 # origin\nv 1 0 0\nv 0 1 0\nf 1 2 3 # one\n"),
+                      &report)
+                .n_faces(),
+            1u);
   expect_refused(write("letters.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n"),
                  "is not a vertex index");
   expect_refused(write("overflow.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999\n"),

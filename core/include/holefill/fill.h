@@ -27,6 +27,7 @@ struct StageTimes {
   double triangulate_seconds = 0.0;
   double refine_seconds = 0.0;
   double smooth_seconds = 0.0;
+  double check_seconds = 0.0;  // self-intersection and degeneracy checks after the stages
 };
 
 // One hole's progress through the pipeline.
