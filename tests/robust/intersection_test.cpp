@@ -1,6 +1,8 @@
 // Self-intersections (issue #5): a patch that must cross the mesh is filled and reported for its
 // hole; where there is room for a valid patch, the fill makes none, and a stage that would make
 // one is undone.
+#include <unistd.h>
+
 #include <cmath>
 
 #include "fill_guarantees.h"
@@ -101,7 +103,9 @@ TEST(PatchIntersections, TheCliSaysWhichHoleIntersectsAndExitsWithFive) {
   Mesh mesh = terrain_with_hole();
   add_tetrahedron(mesh, {Point(0.5, 0.5, -0.5), Point(0.52, 0.5, 0.5), Point(0.48, 0.52, 0.5),
                          Point(0.48, 0.48, 0.5)});
-  const auto dir = std::filesystem::temp_directory_path() / "holefill_robust_cli_intersections";
+  // Per process: two test runs on one machine must not share it.
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("holefill_robust_cli_intersections_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   save_mesh(mesh, dir / "pin.obj");
   const CliRun run = run_cli({"fill", (dir / "pin.obj").string(), "-o", (dir / "out.obj").string(),

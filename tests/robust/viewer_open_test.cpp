@@ -2,6 +2,7 @@
 // that was open, its holes and its fill steps as they were, and the notice names the file and
 // the problem. The session is the viewer's logic without a window.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -13,7 +14,9 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(ViewerOpen, ABadFileShowsWhyAndKeepsThePreviousMesh) {
-  const fs::path dir = fs::temp_directory_path() / "holefill_robust_viewer_open";
+  // Per process: two test runs on one machine must not share it.
+  const fs::path dir =
+      fs::temp_directory_path() / ("holefill_robust_viewer_open_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "folder.obj");
   auto write = [&dir](const std::string& name, const std::string& bytes) {
