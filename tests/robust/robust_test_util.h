@@ -2,6 +2,7 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -62,7 +63,8 @@ class ScratchTest : public ::testing::Test {
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     dir_ = std::filesystem::temp_directory_path() /
-           ("holefill_robust_" + std::string(info->test_suite_name()) + "_" + info->name());
+           ("holefill_robust_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
+            std::to_string(::getpid()));  // two test runs on one machine must not share it
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
