@@ -227,12 +227,7 @@ class FaceIndex {
   // up one by one (then the caller scans the mesh).
   std::optional<std::vector<int>> near(const Box& box) const {
     std::array<std::int64_t, 3> low, high;
-    double cells = 1.0;
-    for (int axis = 0; axis < 3; ++axis) {
-      low[axis] = cell_index(box.low[axis]);
-      high[axis] = cell_index(box.high[axis]);
-      cells *= static_cast<double>(high[axis] - low[axis] + 1);
-    }
+    const double cells = cell_range(box, low, high);
     if (!(cells <= kMaxCellsPerLookup)) return std::nullopt;
     std::vector<int> faces;
     for (auto x = low[0]; x <= high[0]; ++x) {
@@ -267,6 +262,17 @@ class FaceIndex {
   std::int64_t cell_index(double x) const {
     return static_cast<std::int64_t>(std::floor(std::clamp(x / cell_, -1e15, 1e15)));
   }
+  // The cells `box` touches, as index ranges per axis; returns how many (a double: it can be huge).
+  double cell_range(const Box& box, std::array<std::int64_t, 3>& low,
+                    std::array<std::int64_t, 3>& high) const {
+    double cells = 1.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      low[axis] = cell_index(box.low[axis]);
+      high[axis] = cell_index(box.high[axis]);
+      cells *= static_cast<double>(high[axis] - low[axis] + 1);
+    }
+    return cells;
+  }
   static std::uint64_t key_of(std::int64_t x, std::int64_t y, std::int64_t z) {
     // 21 bits per axis; distant cells may share a key, which only adds candidates.
     auto bits = [](std::int64_t i) { return static_cast<std::uint64_t>(i) & 0x1FFFFF; };
@@ -275,12 +281,7 @@ class FaceIndex {
   // Files the face under every cell its box touches; false when that is too many.
   bool place(int face, const Box& box) {
     std::array<std::int64_t, 3> low, high;
-    double cells = 1.0;
-    for (int axis = 0; axis < 3; ++axis) {
-      low[axis] = cell_index(box.low[axis]);
-      high[axis] = cell_index(box.high[axis]);
-      cells *= static_cast<double>(high[axis] - low[axis] + 1);
-    }
+    const double cells = cell_range(box, low, high);
     if (!(cells <= kMaxCellsPerFace)) return false;
     for (auto x = low[0]; x <= high[0]; ++x) {
       for (auto y = low[1]; y <= high[1]; ++y) {
