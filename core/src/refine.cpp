@@ -128,6 +128,7 @@ RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options
     if (splits_now == 0 || result.stopped_at_face_limit) break;
     result.swaps += relax_edges(mesh, patch_faces, patch.faces);
   }
+  if (options.remesh) result.remeshing = remesh_patch(mesh, patch, options.remeshing);
   patch.stage = Stage::Refined;
   return result;
 }

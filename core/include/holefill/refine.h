@@ -9,6 +9,7 @@
 
 #include "holefill/mesh.h"
 #include "holefill/patch.h"
+#include "holefill/remesh.h"
 
 namespace holefill {
 
@@ -16,12 +17,16 @@ struct RefineOptions {
   double tau = std::sqrt(2.0);  // density control factor; 1 <= tau <= sqrt(2) looks right
   // Safety net for absurd inputs: refinement stops (and says so) past this many patch faces.
   std::size_t max_patch_faces = 2'000'000;
+  // Not in the paper: remesh the refined patch toward valence 6 (see remesh.h).
+  bool remesh = false;
+  RemeshOptions remeshing;
 };
 
 struct RefineResult {
   std::size_t splits = 0;
   std::size_t swaps = 0;
   bool stopped_at_face_limit = false;
+  RemeshResult remeshing;  // all zero unless RefineOptions::remesh
 };
 
 // The scale sigma(v) of each boundary vertex: the mean length of its edges in the original mesh.
