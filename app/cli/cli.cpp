@@ -46,6 +46,8 @@ constexpr const char* kFillHelp = R"(usage: holefill fill MESH -o OUT [options]
   --fold-limit DEG            maxmin: a dihedral angle above DEG is minimised before the
                               smallest angle is maximised (default 45; 180 = the paper's order)
   --tau T                     refinement density factor, > 0 (default 1.41421, sqrt 2)
+  --remesh on|off             after refinement, flip and relax the patch toward valence 6
+                              (not in the paper; default off)
   --smooth umbrella|fair      umbrella smoothing (the paper's, default) or fairing that
                               continues the surrounding curvature
   --fair-order 2|3            fairing: 2 bi-Laplacian (default), 3 tri-Laplacian
@@ -160,6 +162,12 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
     } else if (arg == "--tau") {
       options.refine.tau = parse_number(arg, value());
       if (options.refine.tau <= 0.0) throw UsageError{"--tau must be greater than 0"};
+    } else if (arg == "--remesh") {
+      const std::string& text = value();
+      if (text != "on" && text != "off") {
+        throw UsageError{"--remesh takes on or off, got '" + text + "'"};
+      }
+      options.refine.remesh = text == "on";
     } else if (arg == "--smooth") {
       const std::string& text = value();
       if (text == "umbrella") {

@@ -75,6 +75,7 @@ void write_json_report(const ReportInput& in, std::ostream& out) {
       << ",\n  \"output\": " << quoted(in.output_path)
       << ",\n  \"options\": {\"weight\": " << quoted(to_string(o.triangulate.weight))
       << ", \"tau\": " << number(o.refine.tau)
+      << ", \"remesh\": " << (o.refine.remesh ? "true" : "false")
       << ", \"smooth\": " << quoted(o.smooth.method == SmoothMethod::Fair ? "fair" : "umbrella")
       << ", \"fair_order\": " << o.smooth.fair.order
       << ", \"smooth_iterations\": " << o.smooth.iterations

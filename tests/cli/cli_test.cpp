@@ -88,6 +88,22 @@ TEST_F(Cli, FillKeepsTheOriginalPartBitForBit) {
   EXPECT_TRUE(testing::original_part_unchanged(load_mesh(kAssets / "sphere.obj"), load_mesh(out)));
 }
 
+TEST_F(Cli, RemeshOnChangesOnlyThePatchAndIsReported) {
+  const std::string bunny = (kAssets / "bunny.obj").string();
+  const std::string plain = in_dir("plain.obj"), off = in_dir("off.obj"), on = in_dir("on.obj"),
+                    report = in_dir("remesh.json");
+  ASSERT_EQ(holefill_cli({"fill", bunny, "-o", plain}).code, cli::kOk);
+  ASSERT_EQ(holefill_cli({"fill", bunny, "-o", off, "--remesh", "off"}).code, cli::kOk);
+  const CliRun run = holefill_cli({"fill", bunny, "-o", on, "--remesh", "on", "--report", report});
+  ASSERT_EQ(run.code, cli::kOk) << run.err;
+  EXPECT_EQ(read_text(plain), read_text(off));  // off is the default, byte for byte
+  EXPECT_NE(read_text(plain), read_text(on));
+  const Mesh before = load_mesh(bunny), remeshed = load_mesh(on);
+  EXPECT_TRUE(find_holes(remeshed).empty());
+  EXPECT_TRUE(testing::original_part_unchanged(before, remeshed));
+  EXPECT_NE(read_text(report).find("\"remesh\": true"), std::string::npos);
+}
+
 TEST_F(Cli, SelectedHolesOnly) {
   const std::string out = in_dir("two.obj");
   const CliRun run = holefill_cli({"fill", (kAssets / "bunny.obj").string(), "-o", out, "--holes",
@@ -117,6 +133,8 @@ TEST_F(Cli, UsageErrorsExitWithTwoAndWriteNothing) {
         {"fill", bunny, "-o", out, "--holes", "7"},
         {"fill", bunny, "-o", out, "--bogus"},
         {"fill", bunny, "-o", out, "--smooth-iterations", "2.5"},
+        {"fill", bunny, "-o", out, "--remesh", "yes"},
+        {"fill", bunny, "-o", out, "--remesh"},
         {"frobnicate"},
         {"info"}}) {
     const CliRun run = holefill_cli(args);
@@ -151,6 +169,7 @@ TEST_F(Cli, HelpForEachCommand) {
     EXPECT_EQ(run.code, cli::kOk);
     EXPECT_NE(run.out.find("usage"), std::string::npos);
   }
+  EXPECT_NE(holefill_cli({"help", "fill"}).out.find("--remesh on|off"), std::string::npos);
 }
 
 }  // namespace
