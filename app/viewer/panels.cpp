@@ -152,6 +152,12 @@ void options_section(Session& session) {
     options.refine.tau = std::abs(tau - kSqrt2) < 1e-6f ? std::sqrt(2.0) : tau;
     changed = true;
   }
+  changed |= ImGui::Checkbox("remesh to valence 6", &options.refine.remesh);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "After refinement: valence-driven flips and tangential relaxation of the "
+        "patch (not in the paper)");
+  }
   int method = options.smooth.method == SmoothMethod::Fair ? 1 : 0;
   ImGui::SetNextItemWidth(150.0f);
   if (ImGui::Combo("smoothing", &method, "umbrella (paper)\0fair (bi-Laplacian)\0")) {

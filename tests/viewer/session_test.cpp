@@ -145,6 +145,28 @@ TEST(Session, ChangingOptionsRerunsTheSelectedHolesStages) {
   EXPECT_NEAR(session.options().refine.tau, std::sqrt(2.0), 1e-12);
 }
 
+TEST(Session, TurningRemeshOnRerunsTheRefinementWithMoreRegularVertices) {
+  Session session = bunny_session();
+  session.select(0);
+  ASSERT_TRUE(session.step(Stage::Triangulated));
+  ASSERT_TRUE(session.step(Stage::Refined));
+  auto regular = [&] {
+    const auto& histogram = session.fill(0).stats.valence_histogram;
+    const auto six = histogram.find(6);
+    return six == histogram.end() ? std::size_t{0} : six->second;
+  };
+  const std::size_t regular_without = regular();
+  FillOptions options = session.options();
+  options.refine.remesh = true;
+  session.set_options(options);
+  EXPECT_EQ(session.fill(0).stage(), Stage::Refined);
+  EXPECT_GT(session.fill(0).refinement.remeshing.flips, 0u);
+  EXPECT_GT(regular(), regular_without);
+  ASSERT_TRUE(session.undo());
+  EXPECT_FALSE(session.options().refine.remesh);
+  EXPECT_EQ(regular(), regular_without);
+}
+
 TEST(Session, FillAllFillsEveryHoleAndUndoesAsOneAction) {
   Session session = bunny_session();
   ASSERT_TRUE(session.fill_all());
