@@ -151,6 +151,7 @@ FillOptions random_options(Rng& rng) {
   options.smooth.fair.order = integer(rng, 2, 3);
   options.smooth.fair.cotangent_weights = chance(rng, 0.7);
   options.last_stage = chance(rng, 0.8) ? Stage::Smoothed : static_cast<Stage>(integer(rng, 1, 2));
+  options.refine.remesh = chance(rng, 0.3);
   return options;
 }
 
@@ -230,6 +231,7 @@ TEST(Stress, RandomMeshesAndParametersKeepEveryGuarantee) {
       }
       if (fill.self_intersections) ++outcomes["filled, intersecting"];
       if (!fill.refinement_note.empty()) ++outcomes[fill.refinement_note];
+      if (fill.refinement.remeshing.flips) ++outcomes["remeshed (some edge flipped)"];
       if (fill.smoothing_note.find("undone") != std::string::npos) ++outcomes["smoothing undone"];
     }
   }
