@@ -447,18 +447,32 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
     }
     case Stage::Triangulated: {
       const StageUndo undo(mesh, fill.patch);
-      std::string problem;
       std::size_t intersections = 0;
-      fill.times.refine_seconds = timed([&] {
-        try {
-          fill.refinement = refine_patch(mesh, fill.patch, options.refine);
-        } catch (const std::bad_alloc&) {
-          problem = "not enough memory";
+      fill.times.refine_seconds = 0.0;
+      auto refine_and_check = [&](const RefineOptions& refine) {
+        std::string problem;
+        fill.times.refine_seconds += timed([&] {
+          try {
+            fill.refinement = refine_patch(mesh, fill.patch, refine);
+          } catch (const std::bad_alloc&) {
+            problem = "not enough memory";
+          }
+        });
+        if (problem.empty()) {
+          fill.times.check_seconds +=
+              timed([&] { problem = stage_problem(mesh, fill, index, intersections); });
         }
-      });
-      if (problem.empty()) {
-        fill.times.check_seconds +=
-            timed([&] { problem = stage_problem(mesh, fill, index, intersections); });
+        return problem;
+      };
+      std::string problem = refine_and_check(options.refine);
+      if (!problem.empty() && options.refine.remesh) {
+        // The paper's refinement alone may be fine where the remeshing on top of it was not.
+        undo.undo(mesh, fill.patch);
+        RefineOptions without_remesh = options.refine;
+        without_remesh.remesh = false;
+        const std::string remesh_problem = problem;
+        problem = refine_and_check(without_remesh);
+        if (problem.empty()) fill.refinement_note = "remeshing undone: " + remesh_problem;
       }
       if (!problem.empty()) {
         undo.undo(mesh, fill.patch);

@@ -3,7 +3,9 @@
 // one is undone.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "fill_guarantees.h"
 #include "holefill/fill.h"
@@ -168,6 +170,93 @@ TEST(PatchIntersections, SmoothingThatWouldCrossTheMeshIsUndone) {
       << fills[0].smoothing_note;
   EXPECT_EQ(count_patch_intersections(mesh, fills[0].patch), 0u);
   EXPECT_EQ(check_fill_guarantees(before, holes, mesh, fills), "");
+}
+
+// Where along the line p + t n the patch's surface is (the smallest |t|); nothing if it misses.
+std::optional<double> patch_crossing(const Mesh& mesh, const Patch& patch, const Point& p,
+                                     const Point& n) {
+  std::optional<double> nearest;
+  for (const auto f : patch.faces) {
+    auto fv = mesh.cfv_iter(f);
+    const Point& a = mesh.point(*fv);
+    const Point& b = mesh.point(*++fv);
+    const Point& c = mesh.point(*++fv);
+    const Point normal = OpenMesh::cross(b - a, c - a);
+    const double along = OpenMesh::dot(normal, n);
+    if (std::abs(along) < 1e-12 * normal.norm()) continue;
+    const double t = OpenMesh::dot(normal, a - p) / along;
+    const Point x = p + t * n;
+    const bool inside = OpenMesh::dot(OpenMesh::cross(b - a, x - a), normal) >= 0.0 &&
+                        OpenMesh::dot(OpenMesh::cross(c - b, x - b), normal) >= 0.0 &&
+                        OpenMesh::dot(OpenMesh::cross(a - c, x - c), normal) >= 0.0;
+    if (inside && (!nearest || std::abs(t) < std::abs(*nearest))) nearest = t;
+  }
+  return nearest;
+}
+
+TEST(PatchIntersections, RemeshingThatWouldCrossTheMeshIsUndoneAndTheRefinementKept) {
+  // A flip of the remeshing pass puts the surface on a quad's other diagonal. A thin body
+  // standing on such a new edge, reaching toward but not to where the refined patch's surface
+  // is, is crossed by the remeshed patch alone; the stage then keeps the refinement without the
+  // remeshing. The edge is found from the remeshed patch itself.
+  const Mesh open = without_faces(make_icosphere(3), [](const Point& c) {
+    return c[2] > 0.5 + 0.1 * std::sin(5.0 * std::atan2(c[1], c[0]));
+  });
+  const auto holes = find_holes(open);
+  ASSERT_EQ(holes.size(), 1u);
+  FillOptions plain;
+  plain.last_stage = Stage::Refined;
+  FillOptions remeshing = plain;
+  remeshing.refine.remesh = true;
+  Mesh refined = open, remeshed = open;
+  const HoleFill refined_fill = fill_hole(refined, holes[0], plain);
+  const HoleFill remeshed_fill = fill_hole(remeshed, holes[0], remeshing);
+  ASSERT_GT(remeshed_fill.refinement.remeshing.flips, 0u);
+
+  for (const auto e : remeshed.edges()) {
+    const auto h = remeshed.halfedge_handle(e, 0);
+    const VertexHandle c = remeshed.from_vertex_handle(h), d = remeshed.to_vertex_handle(h);
+    if (remeshed.is_boundary(e) || refined.find_halfedge(c, d).is_valid()) continue;
+    if (std::find(remeshed_fill.patch.faces.begin(), remeshed_fill.patch.faces.end(),
+                  remeshed.face_handle(h)) == remeshed_fill.patch.faces.end()) {
+      continue;
+    }
+    const Point middle = 0.5 * (remeshed.point(c) + remeshed.point(d));
+    const Point normal = (remeshed.calc_face_normal(remeshed.face_handle(h)) +
+                          remeshed.calc_face_normal(remeshed.opposite_face_handle(h)))
+                             .normalized();
+    const auto t = patch_crossing(refined, refined_fill.patch, middle, normal);
+    if (!t || std::abs(*t) < 1e-4) continue;
+    // A needle from a quarter of the gap behind the remeshed surface to half way to the refined.
+    const Point tip = middle + 0.5 * *t * normal, foot = middle - 0.25 * *t * normal;
+    const Point side = (remeshed.point(d) - remeshed.point(c)).normalized() * 0.05 * std::abs(*t);
+    const Point other_side = OpenMesh::cross(normal, side);
+    Mesh before = open;
+    add_tetrahedron(
+        before, {tip, foot + side, foot - 0.5 * side + other_side, foot - 0.5 * side - other_side});
+    const auto loops = find_holes(before);
+    ASSERT_EQ(loops.size(), 1u);
+    Mesh unguarded = before;
+    FillOptions triangulate_only = plain;
+    triangulate_only.last_stage = Stage::Triangulated;
+    const HoleFill triangulated = fill_hole(unguarded, loops[0], triangulate_only);
+    if (triangulated.self_intersections) continue;
+    Mesh refined_only = before;
+    const HoleFill refined_again = fill_hole(refined_only, loops[0], plain);
+    if (!refined_again.refinement_note.empty() || refined_again.self_intersections) continue;
+
+    Mesh mesh = before;
+    const auto fills = fill_holes(mesh, loops, remeshing);
+    ASSERT_EQ(fills.size(), 1u);
+    EXPECT_EQ(fills[0].refinement_note, "remeshing undone: it made the patch intersect the mesh");
+    EXPECT_EQ(fills[0].self_intersections, 0u);
+    EXPECT_EQ(fills[0].refinement.remeshing.flips, 0u);
+    EXPECT_EQ(fills[0].stats.new_vertices, refined_again.stats.new_vertices);
+    EXPECT_TRUE(original_part_unchanged(refined_only, mesh));  // the plain refinement, exactly
+    EXPECT_EQ(check_fill_guarantees(before, loops, mesh, fills), "");
+    return;
+  }
+  FAIL() << "no remeshed edge leaves room for a body between the two surfaces";
 }
 
 }  // namespace
