@@ -45,11 +45,11 @@ void sizes(benchmark::internal::Benchmark* bench, std::initializer_list<int> edg
 
 const bool kRegistered = [] {
   sizes(benchmark::RegisterBenchmark("BM_TriangulateMaxMin", BM_TriangulateMaxMin),
-        {50, 100, 200, 400, 800, 2000});
+        {50, 100, 200, 400, 500, 800, 2000});
   sizes(benchmark::RegisterBenchmark("BM_TriangulateLiepa", BM_TriangulateLiepa),
-        {50, 100, 200, 400, 800, 2000});
+        {50, 100, 200, 400, 500, 800, 2000});
   sizes(benchmark::RegisterBenchmark("BM_TriangulateArea", BM_TriangulateArea),
-        {50, 100, 200, 400, 800});
+        {50, 100, 200, 400, 500, 800});
   sizes(
       benchmark::RegisterBenchmark("BM_TriangulateMaxMinPlainLoop", BM_TriangulateMaxMinPlainLoop),
       {100, 400});

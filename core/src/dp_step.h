@@ -9,6 +9,9 @@
 
 namespace holefill::detail {
 
+// A triangle is degenerate when its smallest angle's sine is below this (about 1e-10 rad).
+inline constexpr double kDegenerateSine = 1e-10;
+
 inline Point unit_normal(const Point& a, const Point& b, const Point& c) {
   Point n = OpenMesh::cross(b - a, c - a);
   const double length = n.norm();
@@ -17,51 +20,100 @@ inline Point unit_normal(const Point& a, const Point& b, const Point& c) {
 
 inline bool is_zero(const Point& p) { return p[0] == 0.0 && p[1] == 0.0 && p[2] == 0.0; }
 
-// Dihedral angle against what lies across an edge; nothing known there (zero) adds nothing.
-inline double dihedral_against(const Point& normal, const Point& other) {
-  return is_zero(other) ? 0.0 : angle_between_normals(normal, other);
+// The chord |normal - other| standing for the dihedral angle against what lies across an edge:
+// nothing known there (zero) adds nothing, no orientation of our own (zero) is the worst fold.
+inline double chord_against(const Point& normal, const Point& other) {
+  if (is_zero(other)) return 0.0;
+  if (is_zero(normal)) return 2.0;
+  return (normal - other).norm();
+}
+
+// The best apex found so far for one cell. `value` starts just below kInfeasible, so that any
+// real candidate beats it and a side without a triangulation (kInfeasible) never does. Equal
+// values go to the smaller apex, so the result does not depend on the order apexes are tried in.
+struct CellBest {
+  WeightValue value{weight_key::kInfeasible - 1, INFINITY};
+  int apex = -1;
+  // Whether apex m with this (partial) key and area can no longer beat the best.
+  bool excludes(std::uint64_t key, double area, int m) const {
+    if (key != value.key) return key > value.key;
+    if (area != value.area) return !(area < value.area);
+    return apex >= 0 && m > apex;
+  }
+};
+
+// A sub-polygon's value as the apex loop first sees it: its key and a lower bound of its area,
+// with the exact area read only for candidates that survive the cheap tests.
+struct SideValue {
+  std::uint64_t key = 0;
+  double area_lower_bound = 0.0;
+  const double* area = nullptr;
+};
+
+// The expensive part of trying triangle (i, m, k) (its smallest angle and dihedral angles), once
+// the cheap tests of try_apex have passed; out of line, to keep the apex loop small.
+template <bool kPrune, class Weight, class NormalAcross>
+[[gnu::noinline]] void finish_apex(const Weight& weight, const HolePolygon& polygon, int i, int m,
+                                   int k, std::uint64_t key, double area, const Point& cross,
+                                   const NormalAcross& normal_across, CellBest& best) {
+  const Point& a = polygon.points[i];
+  const Point& b = polygon.points[m];
+  const Point& c = polygon.points[k];
+  const Point ab = b - a, ac = c - a, bc = c - b;
+  const double twice_area = cross.norm();
+  const double ab2 = ab.sqrnorm(), ac2 = ac.sqrnorm(), bc2 = bc.sqrnorm();
+  const double longest = std::max({ab2, ac2, bc2});
+  // sin(smallest angle) >= twice_area / longest^2 (up to a factor): a scale-free test.
+  const bool degenerate = !(longest > 0.0) || twice_area <= kDegenerateSine * longest;
+  if (degenerate) {
+    key = weight.combine(key, (std::uint64_t{1} << weight_key::kDegenerateShift) |
+                                  weight.angle_key(0.0));
+  } else if constexpr (Weight::kUsesMinAngle) {
+    // The smallest angle lies opposite the shortest edge; it is acute, so its cosine is positive.
+    const double cosine_scaled = bc2 <= ab2 && bc2 <= ac2 ? OpenMesh::dot(ab, ac)
+                                 : ac2 <= ab2             ? -OpenMesh::dot(ab, bc)
+                                                          : OpenMesh::dot(ac, bc);
+    const double tangent = cosine_scaled > 0.0 ? twice_area / cosine_scaled : std::sqrt(3.0);
+    key = weight.combine(key, weight.angle_key(tangent));
+  }
+  if constexpr (Weight::kUsesDihedral) {
+    if (kPrune && best.excludes(key, area, m)) return;
+    const Point normal = twice_area > 0.0 ? cross / twice_area : Point(0.0, 0.0, 0.0);
+    double chord = std::max(chord_against(normal, normal_across(i, m)),
+                            chord_against(normal, normal_across(m, k)));
+    const int n = static_cast<int>(polygon.points.size());
+    if (i == 0 && k == n - 1) {
+      chord = std::max(chord, chord_against(normal, polygon.outside_normals[n - 1]));
+    }
+    key = weight.combine(key, weight.dihedral_key(chord));
+  }
+  if (!best.excludes(key, area, m)) {
+    best.value = {key, area};
+    best.apex = m;
+  }
 }
 
 // Tries triangle (i, m, k) on top of the sub-polygon values `left` (i..m) and `right` (m..k).
 // normal_across(a, b) gives the normal of the triangle chosen for sub-polygon (a, b), or of the
-// mesh face across (a, b) when that is an edge of the polygon. With `prune`, candidates are
-// dropped as soon as a partial value fails to beat the best: adding a triangle only worsens every
-// component of a weight, so this never drops a candidate the plain loop would keep.
-template <class Weight, class NormalAcross>
-void try_apex(const Weight& weight, const HolePolygon& polygon, int i, int m, int k,
-              const typename Weight::Value& left, const typename Weight::Value& right,
-              const NormalAcross& normal_across, bool prune, typename Weight::Value& best,
-              int& best_apex) {
-  const auto& p = polygon.points;
-  const int n = static_cast<int>(p.size());
-  const bool have_best = best_apex >= 0;
-  const bool pruning = prune && have_best;
-  typename Weight::Value value = Weight::combine(left, right);
-  if (pruning && !weight.less(value, best)) return;
-  if (pruning) {
-    // The triangle's area costs one cross product: at its best (no defect, no angle or
-    // dihedral penalty), does the candidate still beat the best?
-    TriangleMeasures optimistic;
-    optimistic.area = 0.5 * OpenMesh::cross(p[m] - p[i], p[k] - p[i]).norm();
-    optimistic.min_angle = M_PI;
-    if (!weight.less(Weight::combine(value, weight.of(optimistic)), best)) return;
-  }
-  TriangleMeasures measures = measure_triangle(p[i], p[m], p[k], Weight::kUsesMinAngle);
-  if constexpr (Weight::kUsesDihedral) {
-    if (pruning && !weight.less(Weight::combine(value, weight.of(measures)), best)) return;
-    const Point normal = unit_normal(p[i], p[m], p[k]);
-    double worst = std::max(dihedral_against(normal, normal_across(i, m)),
-                            dihedral_against(normal, normal_across(m, k)));
-    if (i == 0 && k == n - 1) {
-      worst = std::max(worst, dihedral_against(normal, polygon.outside_normals[n - 1]));
-    }
-    measures.max_dihedral = worst;
-  }
-  value = Weight::combine(value, weight.of(measures));
-  if (!have_best || weight.less(value, best)) {
-    best = value;
-    best_apex = m;
-  }
+// mesh face across (a, b) when that is an edge of the polygon. With kPrune, a candidate is
+// dropped as soon as a partial value (or a lower bound of it) fails to beat the best: adding a
+// term only makes a key larger or keeps it, and only makes the area larger, so this never drops a
+// candidate the plain loop would keep, and the computed values are the same either way.
+template <bool kPrune, class Weight, class NormalAcross>
+[[gnu::always_inline]] inline void try_apex(const Weight& weight, const HolePolygon& polygon,
+                                            int i, int m, int k, const WeightValue& left,
+                                            const SideValue& right,
+                                            const NormalAcross& normal_across, CellBest& best) {
+  const std::uint64_t key = weight.combine(left.key, right.key);
+  const double sides_lower_bound = left.area + right.area_lower_bound;
+  if (kPrune && best.excludes(key, sides_lower_bound, m)) return;
+  const Point& a = polygon.points[i];
+  const Point cross = OpenMesh::cross(polygon.points[m] - a, polygon.points[k] - a);
+  const double half_area = 0.5 * cross.norm();
+  if (kPrune && best.excludes(key, sides_lower_bound + half_area, m)) return;
+  const double area = (left.area + *right.area) + half_area;
+  if (kPrune && best.excludes(key, area, m)) return;
+  finish_apex<kPrune>(weight, polygon, i, m, k, key, area, cross, normal_across, best);
 }
 
 // Calls solve(weight) with the weight policy options.weight names (weights.h).
@@ -69,13 +121,13 @@ template <class Solve>
 auto with_weight(const TriangulateOptions& options, Solve&& solve) {
   switch (options.weight) {
     case WeightKind::Liepa:
-      return solve(LiepaWeight{options.angle_tolerance});
+      return solve(LiepaWeight{});
     case WeightKind::Area:
       return solve(AreaWeight{});
     case WeightKind::MaxMin:
       break;
   }
-  return solve(MaxMinWeight{options.angle_tolerance, options.fold_limit});
+  return solve(MaxMinWeight::with_fold_limit(options.fold_limit));
 }
 
 // Follows the apexes from the closing edge (0, n-1) down: the triangles of the solution.

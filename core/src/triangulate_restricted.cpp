@@ -68,7 +68,6 @@ template <class Weight>
 std::optional<PolygonTriangulation> solve_restricted(const HolePolygon& polygon,
                                                      const Weight& weight,
                                                      const RestrictedSearch& search) {
-  using Value = typename Weight::Value;
   const auto& p = polygon.points;
   const int n = static_cast<int>(p.size());
   ChordSet set = allowed_chords(polygon, search);
@@ -99,9 +98,9 @@ std::optional<PolygonTriangulation> solve_restricted(const HolePolygon& polygon,
   for (const auto& [a, b] : chords) up[a].push_back(b);
   for (auto& list : up) std::sort(list.begin(), list.end());
 
-  std::vector<Value> values(chords.size(), Weight::identity());
+  std::vector<WeightValue> values(chords.size());
   std::vector<int> apexes(chords.size(), -1);
-  const Value edge_value = Weight::identity();
+  const WeightValue edge_value{};
   // The cell of side (a, b): -1 for a polygon edge, -2 when the side is not allowed or unsolved.
   auto side = [&](int a, int b) {
     if (b == a + 1) return -1;
@@ -115,16 +114,18 @@ std::optional<PolygonTriangulation> solve_restricted(const HolePolygon& polygon,
   };
   for (std::size_t c = 0; c < chords.size(); ++c) {
     const auto [i, k] = chords[c];
-    int best_apex = -1;
+    detail::CellBest best;
     for (const int m : up[i]) {
       if (m >= k) break;
       const int left = side(i, m), right = side(m, k);
       if (left == -2 || right == -2) continue;
-      detail::try_apex(weight, polygon, i, m, k, left < 0 ? edge_value : values[left],
-                       right < 0 ? edge_value : values[right], normal_across, true, values[c],
-                       best_apex);
+      const WeightValue& right_value = right < 0 ? edge_value : values[right];
+      detail::try_apex<true>(weight, polygon, i, m, k, left < 0 ? edge_value : values[left],
+                             {right_value.key, right_value.area, &right_value.area}, normal_across,
+                             best);
     }
-    apexes[c] = best_apex;
+    values[c] = best.value;
+    apexes[c] = best.apex;
   }
   if (side(0, n - 1) < 0) return std::nullopt;
 

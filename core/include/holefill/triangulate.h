@@ -40,7 +40,6 @@ struct RestrictedSearch {
 
 struct TriangulateOptions {
   WeightKind weight = WeightKind::MaxMin;
-  double angle_tolerance = kDefaultAngleTolerance;
   // maxmin: a largest dihedral angle beyond this (radians) is minimised before the smallest
   // angle is maximised; pi gives the paper's order exactly (see weights.h).
   double fold_limit = kDefaultFoldLimit;
@@ -52,8 +51,8 @@ struct TriangulateOptions {
 
 // The dynamic program stores apexes in 16 bits: holes must have fewer boundary edges than this.
 inline constexpr std::size_t kMaxPolygonSize = 0xFFFF;
-// The full search needs about 75 bytes per (i, k) cell (n^2 / 2 cells): above this many edges
-// (340 MB) only the restricted search runs.
+// The full search needs 30 bytes per (i, k) cell (n^2 / 2 cells): above this many edges
+// (135 MB) only the restricted search runs.
 inline constexpr std::size_t kMaxFullSearchEdges = 3000;
 
 // The weight's components for a whole triangulation, whatever the weight: the quantities the
@@ -91,6 +90,10 @@ TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c
 
 // Angle between two unit normals, radians; pi when either is zero (unknown orientation).
 double angle_between_normals(const Point& n1, const Point& n2);
+
+// The value options.weight gives a triangulation of this quality (what the dynamic program
+// minimises, up to its dihedral terms being taken against the neighbouring sub-polygons' triangles).
+WeightValue weight_value(const TriangulationQuality& quality, const TriangulateOptions& options);
 
 // Recomputes the quality of a given triangulation of `polygon` from scratch, edge by edge.
 TriangulationQuality evaluate_triangulation(const HolePolygon& polygon,
