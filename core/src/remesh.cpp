@@ -72,10 +72,6 @@ FlipQuad quad_of(const Mesh& mesh, EdgeHandle e) {
           mesh.to_vertex_handle(mesh.next_halfedge_handle(h1))};
 }
 
-double min_angle_of(const Point& a, const Point& b, const Point& c) {
-  return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)});
-}
-
 // The flip keeps the surface's shape: both new triangles are proper, face the way the old pair
 // did, and bend against each other no more than allowed.
 bool flip_keeps_shape(const Mesh& mesh, const FlipQuad& q, double max_dihedral) {
@@ -91,12 +87,7 @@ bool flip_keeps_shape(const Mesh& mesh, const FlipQuad& q, double max_dihedral) 
   if (OpenMesh::dot(new1, old_sum) <= 0.0 || OpenMesh::dot(new2, old_sum) <= 0.0) return false;
   const double old_dihedral = angle_between_normals(old1.normalized(), old2.normalized());
   const double new_dihedral = angle_between_normals(new1.normalized(), new2.normalized());
-  if (new_dihedral > std::max(max_dihedral, old_dihedral)) return false;
-  // Valence may trade some triangle shape, relaxation restores most of it; it must not make a
-  // sliver of a fat pair.
-  const double old_min = std::min(min_angle_of(a, b, c), min_angle_of(b, a, d));
-  const double new_min = std::min(min_angle_of(c, d, b), min_angle_of(d, c, a));
-  return new_min >= 0.5 * old_min;
+  return new_dihedral <= std::max(max_dihedral, old_dihedral);
 }
 
 class PatchRemesher {
@@ -170,26 +161,28 @@ class PatchRemesher {
     return off * off;
   }
 
-  // The area-weighted centroid of v's faces, moved into v's tangent plane; nothing when v's
-  // fan has no area.
+  // The mean of v's neighbours, moved into v's tangent plane (the normal: the area-weighted
+  // mean of its faces'); nothing when v's fan has no area.
   std::optional<Point> tangential_centroid(VertexHandle v) const {
     Point centroid(0.0, 0.0, 0.0), normal(0.0, 0.0, 0.0);
-    double area = 0.0;
-    for (const auto f : mesh_.vf_range(v)) {
-      std::array<Point, 3> p;
-      int c = 0;
-      for (const auto u : mesh_.fv_range(f)) p[c++ % 3] = mesh_.point(u);
-      const Point n = face_normal(p[0], p[1], p[2]);
-      const double a = 0.5 * n.norm();
-      centroid += a * (p[0] + p[1] + p[2]) / 3.0;
-      normal += n;
-      area += a;
+    int neighbours = 0;
+    for (const auto u : mesh_.vv_range(v)) {
+      centroid += mesh_.point(u);
+      ++neighbours;
     }
-    if (!(area > 0.0) || !(normal.norm() > 0.0)) return std::nullopt;
+    for (const auto f : mesh_.vf_range(v)) normal += area_normal(f);
+    if (neighbours == 0 || !(normal.norm() > 0.0)) return std::nullopt;
     normal.normalize();
     const Point& p = mesh_.point(v);
-    const Point step = centroid / area - p;
+    const Point step = centroid / neighbours - p;
     return p + (step - OpenMesh::dot(step, normal) * normal);
+  }
+
+  Point area_normal(FaceHandle f) const {
+    std::array<Point, 3> p;
+    int c = 0;
+    for (const auto u : mesh_.fv_range(f)) p[c++ % 3] = mesh_.point(u);
+    return face_normal(p[0], p[1], p[2]);
   }
 
   std::vector<Point> fan_normals(VertexHandle v) const {

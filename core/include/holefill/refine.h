@@ -2,6 +2,8 @@
 // density interpolation, Sec. II, Step 2). Triangles are split at their centroid while
 // tau * |vc - vm| exceeds both sigma(vc) and sigma(vm) for every corner m, and interior patch
 // edges are swapped until they are locally Delaunay (opposite angles sum to at most pi).
+// With RefineOptions::remesh (not in the paper) the refined patch is then remeshed toward
+// valence 6 (remesh.h).
 #pragma once
 
 #include <cmath>

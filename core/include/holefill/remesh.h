@@ -4,8 +4,8 @@
 //       squared deviations from each corner's target valence (6 for new vertices; for a hole's
 //       boundary vertex, its valence in the whole mesh when the patch side gets triangles of
 //       about 60 degrees: the share of 6 that the patch side's angle is of the vertex's angle), and
-//   (b) tangential relaxation: each new vertex moves to the area-weighted centroid of its faces,
-//       in its tangent plane,
+//   (b) tangential relaxation: each new vertex moves to the mean of its neighbours, within its
+//       tangent plane,
 // make most new vertices regular, as in isotropic remeshing (Botsch & Kobbelt 2004), without
 // splits or collapses: the vertex count stays what the paper's density rule chose.
 // Only interior patch edges flip and only new vertices move; the boundary loop and the rest of
