@@ -72,8 +72,17 @@ FlipQuad quad_of(const Mesh& mesh, EdgeHandle e) {
           mesh.to_vertex_handle(mesh.next_halfedge_handle(h1))};
 }
 
+// A flip (or a move) may make the smallest angle of the triangles it changes worse, for the
+// valence's sake, but not below this (unless it was already): fairing a patch with slivers in it
+// can squeeze them further.
+constexpr double kSliverAngle = 20.0 * M_PI / 180.0;
+
+double min_angle_of(const Point& a, const Point& b, const Point& c) {
+  return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)});
+}
+
 // The flip keeps the surface's shape: both new triangles are proper, face the way the old pair
-// did, and bend against each other no more than allowed.
+// did, bend against each other no more than allowed, and are no slivers.
 bool flip_keeps_shape(const Mesh& mesh, const FlipQuad& q, double max_dihedral) {
   const Point &a = mesh.point(q.a), &b = mesh.point(q.b), &c = mesh.point(q.c),
               &d = mesh.point(q.d);
@@ -87,7 +96,10 @@ bool flip_keeps_shape(const Mesh& mesh, const FlipQuad& q, double max_dihedral) 
   if (OpenMesh::dot(new1, old_sum) <= 0.0 || OpenMesh::dot(new2, old_sum) <= 0.0) return false;
   const double old_dihedral = angle_between_normals(old1.normalized(), old2.normalized());
   const double new_dihedral = angle_between_normals(new1.normalized(), new2.normalized());
-  return new_dihedral <= std::max(max_dihedral, old_dihedral);
+  if (new_dihedral > std::max(max_dihedral, old_dihedral)) return false;
+  const double old_min = std::min(min_angle_of(a, b, c), min_angle_of(b, a, d));
+  const double new_min = std::min(min_angle_of(c, d, b), min_angle_of(d, c, a));
+  return new_min >= std::min(old_min, kSliverAngle);
 }
 
 class PatchRemesher {
@@ -131,8 +143,10 @@ class PatchRemesher {
       if (!target) continue;
       const Point from = mesh_.point(v);
       const auto normals = fan_normals(v);
+      const double smallest_angle = fan_min_angle(v);
       mesh_.set_point(v, *target);
-      if (fan_stays_proper(v, normals)) {
+      if (fan_stays_proper(v, normals) &&
+          fan_min_angle(v) >= std::min(smallest_angle, kSliverAngle)) {
         ++moves;
       } else {
         mesh_.set_point(v, from);
@@ -189,6 +203,17 @@ class PatchRemesher {
     std::vector<Point> normals;
     for (const auto f : mesh_.vf_range(v)) normals.push_back(mesh_.calc_face_normal(f));
     return normals;
+  }
+
+  double fan_min_angle(VertexHandle v) const {
+    double smallest = M_PI;
+    for (const auto f : mesh_.vf_range(v)) {
+      std::array<Point, 3> p;
+      int c = 0;
+      for (const auto u : mesh_.fv_range(f)) p[c++ % 3] = mesh_.point(u);
+      smallest = std::min(smallest, min_angle_of(p[0], p[1], p[2]));
+    }
+    return smallest;
   }
 
   // No face around v became degenerate or turned over (normals `before`, in the same order).

@@ -153,6 +153,23 @@ TEST(Remesh, NeverChangesTheBoundaryOrAnythingOutsideThePatch) {
   }
 }
 
+double smallest_angle(const Mesh& mesh, const Patch& patch) {
+  return patch_stats(mesh, patch).min_angle_deg;
+}
+
+TEST(Remesh, MakesNoSliverThatRefinementDidNotHave) {
+  for (const bool flat : {false, true}) {
+    const Mesh before = flat ? plane_with_hole() : sphere_with_cap_hole();
+    const auto holes = find_holes(before);
+    const Hole& hole = innermost(holes);
+    Mesh plain = before, remeshed = before;
+    const HoleFill without = refine_only(plain, hole, false);
+    const HoleFill with = refine_only(remeshed, hole, true);
+    EXPECT_GE(smallest_angle(remeshed, with.patch),
+              std::min(smallest_angle(plain, without.patch), 20.0));
+  }
+}
+
 TEST(Remesh, KeepsAManifoldWithoutDegenerateTrianglesOrDuplicateEdges) {
   for (const bool flat : {false, true}) {
     const Mesh before = flat ? plane_with_hole() : sphere_with_cap_hole();

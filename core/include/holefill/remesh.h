@@ -10,9 +10,10 @@
 // splits or collapses: the vertex count stays what the paper's density rule chose.
 // Only interior patch edges flip and only new vertices move; the boundary loop and the rest of
 // the mesh never change. A flip is refused when the swapped edge exists already, or when it
-// makes a degenerate or folded triangle or a dihedral angle above max_flip_dihedral_deg (or
-// above the one it replaces, if that is larger); a move is refused when it would degenerate or
-// turn over one of the vertex's faces.
+// makes a degenerate or folded triangle, a dihedral angle above max_flip_dihedral_deg (or above
+// the one it replaces, if that is larger) or an angle below 20 degrees (unless the pair had one);
+// a move is refused when it would degenerate or turn over one of the vertex's faces, or give
+// them an angle below 20 degrees (unless they had one).
 #pragma once
 
 #include <cstddef>
