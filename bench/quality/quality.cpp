@@ -38,6 +38,8 @@ constexpr const char* kUsage = R"(usage: holefill-quality [options]
   --meshes a,b         sphere, ellipsoid, blob, torus, bunny (default: all)
   --weights a,b        maxmin, liepa, area (default: all three; the summaries show the first)
   --smooth a,b         umbrella, fair-cot-2, fair-uniform-2, fair-cot-3, fair-uniform-3,
+                       any of these five followed by +remesh (the refined patch remeshed
+                       toward valence 6 first, e.g. fair-cot-2+remesh),
                        cgal (CGAL's whole hole filling), cgal-fair (our triangulation and
                        refinement, CGAL's fairing), truth (the cut faces themselves)
                        (default: all that this build has)
@@ -96,8 +98,15 @@ struct Method {
   FillOptions options;
 };
 
-std::optional<FillOptions> smoothing_options(const std::string& name) {
+// A smoothing name, optionally followed by "+remesh" (the refined patch remeshed first).
+std::optional<FillOptions> smoothing_options(std::string name) {
   FillOptions options;
+  const std::string remesh_suffix = "+remesh";
+  if (name.size() > remesh_suffix.size() &&
+      name.compare(name.size() - remesh_suffix.size(), remesh_suffix.size(), remesh_suffix) == 0) {
+    options.refine.remesh = true;
+    name.resize(name.size() - remesh_suffix.size());
+  }
   if (name == "umbrella") return options;
   if (name.rfind("fair-cot-", 0) == 0 || name.rfind("fair-uniform-", 0) == 0) {
     options.smooth.method = SmoothMethod::Fair;
@@ -305,7 +314,9 @@ int run(int argc, char** argv) {
   }
   if (cuts.empty()) cuts = {{3, 3, 3}, {7}};
   if (smoothing_names.empty()) {
-    smoothing_names = {"umbrella", "fair-cot-2", "fair-uniform-2", "fair-cot-3", "fair-uniform-3"};
+    smoothing_names = {"umbrella",          "fair-cot-2",       "fair-uniform-2",
+                       "fair-cot-3",        "fair-uniform-3",   "umbrella+remesh",
+                       "fair-cot-2+remesh", "fair-cot-3+remesh"};
 #ifdef HOLEFILL_QUALITY_WITH_CGAL
     smoothing_names.push_back("cgal-fair");
     smoothing_names.push_back("cgal");
@@ -419,6 +430,9 @@ int run(int argc, char** argv) {
   print_pivot(
       rows, first_weight, "5th percentile of the triangles' smallest angle, degrees",
       [](const Quality& q) { return q.min_angle_p5; }, false, 1);
+  print_pivot(
+      rows, first_weight, "Share of the new vertices with valence 6, %",
+      [](const Quality& q) { return 100.0 * q.valence6_share; }, false, 0);
   print_pivot(
       rows, first_weight, "Largest dihedral angle across the hole's boundary, degrees",
       [](const Quality& q) { return q.max_boundary_dihedral; }, true, 1);
