@@ -88,6 +88,7 @@ std::string fill_input(const std::string& bytes) {
   options.smooth.iterations = static_cast<int>(byte(5) % 20);
   options.smooth.step = (1 + byte(6)) / 256.0;
   options.refine.max_patch_faces = kMaxPatchFaces;
+  options.refine.remesh = (byte(6) & 1) != 0;  // shares the step's byte, so inputs keep meaning
 
   // The polygon's points on a grid of 0.1, and an outer ring pushed out from their centre.
   std::vector<Point> inner;
