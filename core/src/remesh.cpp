@@ -36,6 +36,7 @@ Point face_normal(const Point& a, const Point& b, const Point& c) {
   return OpenMesh::cross(b - a, c - a);  // length: twice the area
 }
 
+// target_valence(), with the patch's faces as a set.
 int target_valence_in(const Mesh& mesh, const FaceSet& patch_faces, VertexHandle v) {
   double patch_angle = 0.0, other_angle = 0.0;
   int patch_triangles = 0, interior_patch_edges = 0;
@@ -52,7 +53,7 @@ int target_valence_in(const Mesh& mesh, const FaceSet& patch_faces, VertexHandle
         in_patch(patch_faces, f) && in_patch(patch_faces, mesh.opposite_face_handle(h));
   }
   const int valence = static_cast<int>(mesh.valence(v));
-  if (patch_triangles == static_cast<int>(mesh.valence(v))) return kRegularValence;
+  if (patch_triangles == valence) return kRegularValence;  // a new vertex, inside the patch
   // A boundary vertex: the edges outside the patch stay; the patch side should hold triangles of
   // about 60 degrees, i.e. its share of the vertex's six.
   const double share = patch_angle / std::max(patch_angle + other_angle, 1e-300);
@@ -104,7 +105,7 @@ bool flip_keeps_shape(const Mesh& mesh, const FlipQuad& q, double max_dihedral) 
 
 class PatchRemesher {
  public:
-  PatchRemesher(Mesh& mesh, Patch& patch, const RemeshOptions& options)
+  PatchRemesher(Mesh& mesh, const Patch& patch, const RemeshOptions& options)
       : mesh_(mesh),
         patch_(patch),
         tags_(mesh),
@@ -230,7 +231,7 @@ class PatchRemesher {
   }
 
   Mesh& mesh_;
-  Patch& patch_;
+  const Patch& patch_;
   PatchTags tags_;
   FaceSet patch_faces_;
   std::unordered_map<int, int> target_;
@@ -243,13 +244,12 @@ int target_valence(const Mesh& mesh, const Patch& patch, VertexHandle vertex) {
   return target_valence_in(mesh, face_set(patch), vertex);
 }
 
-RemeshResult remesh_patch(Mesh& mesh, Patch& patch, const RemeshOptions& options) {
+RemeshResult remesh_patch(Mesh& mesh, const Patch& patch, const RemeshOptions& options) {
   RemeshResult result;
   if (patch.new_vertices.empty()) return result;
   PatchRemesher remesher(mesh, patch, options);
   for (int round = 0; round < options.iterations; ++round) {
-    const std::size_t flips = remesher.flip_sweep();
-    result.flips += flips;
+    result.flips += remesher.flip_sweep();
     result.moves += remesher.relax_sweep();
   }
   return result;

@@ -36,8 +36,9 @@ struct RemeshResult {
 // The valence a vertex of the patch should have in the whole mesh.
 int target_valence(const Mesh& mesh, const Patch& patch, VertexHandle vertex);
 
-// Remeshes the patch in place; faces a flip changed are tagged Stage::Refined. Does nothing on a
-// patch without new vertices (the triangulation's own optimum is left as it is).
-RemeshResult remesh_patch(Mesh& mesh, Patch& patch, const RemeshOptions& options = {});
+// Remeshes the patch in place: its faces and new vertices keep their handles (so `patch` stays
+// valid as it is), faces a flip changed are tagged Stage::Refined. Does nothing on a patch
+// without new vertices (the triangulation's own optimum is left as it is).
+RemeshResult remesh_patch(Mesh& mesh, const Patch& patch, const RemeshOptions& options = {});
 
 }  // namespace holefill
