@@ -226,5 +226,38 @@ TEST(Smooth, LowersUmbrellaEnergyAndNeverMovesTheBoundary) {
   for (const auto v : fill.patch.boundary) EXPECT_EQ(mesh.point(v), refined.point(v));
 }
 
+// The paper's operator written out on the mesh itself, P <- P + lambda (mean of neighbours - P),
+// all vertices at once: the flat-array smoother must give the same positions, bit for bit.
+TEST(Smooth, MatchesTheUmbrellaOperatorAppliedOnTheMesh) {
+  const Mesh before = sphere_with_two_holes();
+  const auto holes = find_holes(before);
+  Mesh mesh = before;
+  FillOptions options;
+  options.last_stage = Stage::Refined;
+  HoleFill fill = fill_hole(mesh, holes[0], options);
+  ASSERT_GT(fill.patch.new_vertices.size(), 3u);
+  Mesh reference = mesh;
+  SmoothOptions smooth;
+  smooth.iterations = 7;
+  smooth.step = 0.3;
+  for (int it = 0; it < smooth.iterations; ++it) {
+    std::vector<Point> next;
+    for (const auto v : fill.patch.new_vertices) {
+      Point sum(0, 0, 0);
+      int count = 0;
+      for (const auto q : reference.vv_range(v)) {
+        sum += reference.point(q);
+        ++count;
+      }
+      next.push_back(reference.point(v) + smooth.step * (sum / count - reference.point(v)));
+    }
+    for (std::size_t i = 0; i < next.size(); ++i) {
+      reference.set_point(fill.patch.new_vertices[i], next[i]);
+    }
+  }
+  smooth_patch(mesh, fill.patch, smooth);
+  for (const auto v : mesh.vertices()) EXPECT_EQ(mesh.point(v), reference.point(v)) << v.idx();
+}
+
 }  // namespace
 }  // namespace holefill
