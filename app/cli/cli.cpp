@@ -45,6 +45,9 @@ constexpr const char* kFillHelp = R"(usage: holefill fill MESH -o OUT [options]
   --weight maxmin|liepa|area  triangulation weight (default maxmin, the paper's)
   --fold-limit DEG            maxmin: a dihedral angle above DEG is minimised before the
                               smallest angle is maximised (default 45; 180 = the paper's order)
+  --restricted-above N        holes with more than N boundary edges are triangulated over a
+                              restricted set of chords (default 800; 0 = always the full
+                              search, which takes at most 3000 edges)
   --tau T                     refinement density factor, > 0 (default 1.41421, sqrt 2)
   --remesh on|off             after refinement, flip and relax the patch toward valence 6
                               (not in the paper; default off)
@@ -159,6 +162,10 @@ int run_fill(const std::vector<std::string>& args, std::ostream& out, std::ostre
       if (!(degrees > 0.0 && degrees <= 180.0))
         throw UsageError{"--fold-limit must be in (0, 180]"};
       options.triangulate.fold_limit = degrees * M_PI / 180.0;
+    } else if (arg == "--restricted-above") {
+      const long n = parse_integer(arg, value());
+      if (n < 0) throw UsageError{"--restricted-above must be 0 (never) or a boundary edge count"};
+      options.triangulate.restricted.above_edges = static_cast<std::size_t>(n);
     } else if (arg == "--tau") {
       options.refine.tau = parse_number(arg, value());
       if (options.refine.tau <= 0.0) throw UsageError{"--tau must be greater than 0"};

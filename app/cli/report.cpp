@@ -74,6 +74,8 @@ void write_json_report(const ReportInput& in, std::ostream& out) {
   out << "{\n  \"input\": " << quoted(in.input_path)
       << ",\n  \"output\": " << quoted(in.output_path)
       << ",\n  \"options\": {\"weight\": " << quoted(to_string(o.triangulate.weight))
+      << ", \"fold_limit_deg\": " << number(o.triangulate.fold_limit * 180.0 / M_PI)
+      << ", \"restricted_above\": " << o.triangulate.restricted.above_edges
       << ", \"tau\": " << number(o.refine.tau)
       << ", \"remesh\": " << (o.refine.remesh ? "true" : "false")
       << ", \"smooth\": " << quoted(o.smooth.method == SmoothMethod::Fair ? "fair" : "umbrella")

@@ -86,12 +86,21 @@ int main(int argc, char** argv) {
           cgal_delaunay);
     print("CGAL Delaunay", n, {cgal_delaunay, evaluate_triangulation(polygon, delaunay)}, cgal_full,
           cgal_delaunay);
-    for (const auto weight : {WeightKind::Liepa, WeightKind::MaxMin}) {
-      std::optional<PolygonTriangulation> ours;
-      const double seconds =
-          best_time(repeats, [&] { ours = triangulate_polygon(polygon, {weight}); });
-      const std::string name = "holefill " + to_string(weight);
-      print(name.c_str(), n, {seconds, ours->quality}, cgal_full, cgal_delaunay);
+    // Ours with the full search forced (whatever the size), and with the restricted search
+    // (what holes above RestrictedSearch::above_edges get by default).
+    for (const bool restricted : {false, true}) {
+      for (const auto weight : {WeightKind::Liepa, WeightKind::MaxMin}) {
+        TriangulateOptions options{weight};
+        options.restricted.above_edges = 0;
+        std::optional<PolygonTriangulation> ours;
+        const double seconds = best_time(repeats, [&] {
+          ours = restricted ? triangulate_polygon_restricted(polygon, options)
+                            : triangulate_polygon(polygon, options);
+        });
+        const std::string name =
+            "holefill " + to_string(weight) + (restricted ? " restricted" : " full");
+        print(name.c_str(), n, {seconds, ours->quality}, cgal_full, cgal_delaunay);
+      }
     }
   }
 }

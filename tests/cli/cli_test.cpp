@@ -123,6 +123,19 @@ TEST_F(Cli, MaxBoundarySkipsLargerHoles) {
   EXPECT_EQ(find_holes(load_mesh(out)).size(), 1u);  // the 99-edge hole stays
 }
 
+// With a low threshold every bunny hole goes through the restricted search: still all filled, and
+// the largest one (99 edges) differently from the full search.
+TEST_F(Cli, RestrictedAboveSendsLargerHolesToTheRestrictedSearch) {
+  const std::string bunny = (kAssets / "bunny.obj").string();
+  const std::string full = in_dir("full.obj"), restricted = in_dir("restricted.obj");
+  ASSERT_EQ(holefill_cli({"fill", bunny, "-o", full, "--stage", "triangulate"}).code, cli::kOk);
+  const CliRun run = holefill_cli(
+      {"fill", bunny, "-o", restricted, "--stage", "triangulate", "--restricted-above", "20"});
+  ASSERT_EQ(run.code, cli::kOk) << run.err;
+  EXPECT_TRUE(find_holes(load_mesh(restricted)).empty());
+  EXPECT_NE(read_text(full), read_text(restricted));
+}
+
 TEST_F(Cli, UsageErrorsExitWithTwoAndWriteNothing) {
   const std::string bunny = (kAssets / "bunny.obj").string(), out = in_dir("x.obj");
   for (const std::vector<std::string>& args :
@@ -135,6 +148,8 @@ TEST_F(Cli, UsageErrorsExitWithTwoAndWriteNothing) {
         {"fill", bunny, "-o", out, "--smooth-iterations", "2.5"},
         {"fill", bunny, "-o", out, "--remesh", "yes"},
         {"fill", bunny, "-o", out, "--remesh"},
+        {"fill", bunny, "-o", out, "--restricted-above", "-5"},
+        {"fill", bunny, "-o", out, "--restricted-above", "many"},
         {"frobnicate"},
         {"info"}}) {
     const CliRun run = holefill_cli(args);

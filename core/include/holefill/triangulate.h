@@ -33,7 +33,7 @@ struct HolePolygon {
 // consecutive boundary vertices, between anchors every pocket_edges/2 vertices, and to each
 // vertex's nearest neighbours in space.
 struct RestrictedSearch {
-  std::size_t above_edges = 600;  // holes with more boundary edges use it; 0: never
+  std::size_t above_edges = 800;  // holes with more boundary edges use it; 0: never
   int pocket_edges = 48;
   int nearest_neighbours = 16;
 };
