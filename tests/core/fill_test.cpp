@@ -205,13 +205,22 @@ TEST(Refine, LargerTauNeverGivesFewerVertices) {
   EXPECT_GT(previous, 0u);
 }
 
-TEST(Smooth, LowersUmbrellaEnergyAndNeverMovesTheBoundary) {
-  const Mesh before = sphere_with_two_holes();
-  const auto holes = find_holes(before);
-  Mesh mesh = before;
+// The sphere with its first hole filled up to refinement, ready to smooth.
+struct RefinedSphere {
+  Mesh before, mesh;
+  HoleFill fill;
+};
+RefinedSphere refined_sphere() {
+  RefinedSphere sphere{sphere_with_two_holes(), {}, {}};
+  sphere.mesh = sphere.before;
   FillOptions options;
   options.last_stage = Stage::Refined;
-  HoleFill fill = fill_hole(mesh, holes[0], options);
+  sphere.fill = fill_hole(sphere.mesh, find_holes(sphere.before)[0], options);
+  return sphere;
+}
+
+TEST(Smooth, LowersUmbrellaEnergyAndNeverMovesTheBoundary) {
+  auto [before, mesh, fill] = refined_sphere();
   // Disturb the refined patch so there is something to smooth.
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> jitter(-0.02, 0.02);
@@ -229,12 +238,7 @@ TEST(Smooth, LowersUmbrellaEnergyAndNeverMovesTheBoundary) {
 // The paper's operator written out on the mesh itself, P <- P + lambda (mean of neighbours - P),
 // all vertices at once: the flat-array smoother must give the same positions, bit for bit.
 TEST(Smooth, MatchesTheUmbrellaOperatorAppliedOnTheMesh) {
-  const Mesh before = sphere_with_two_holes();
-  const auto holes = find_holes(before);
-  Mesh mesh = before;
-  FillOptions options;
-  options.last_stage = Stage::Refined;
-  HoleFill fill = fill_hole(mesh, holes[0], options);
+  auto [before, mesh, fill] = refined_sphere();
   ASSERT_GT(fill.patch.new_vertices.size(), 3u);
   Mesh reference = mesh;
   SmoothOptions smooth;
