@@ -36,6 +36,8 @@ const char* usage() {
          "  --select-hole K                 select hole K (0 is the largest)\n"
          "  --run triangulate,refine,smooth run these stages on the selected hole\n"
          "  --fill-all                      fill every hole\n"
+         "  --remesh                        refine with the remeshing pass (toward valence 6)\n"
+         "  --fair                          smooth by fairing instead of the umbrella operator\n"
          "  --compare                       show liepa (left) vs maxmin (right) on the hole\n"
          "  --compare-triangulation-only    compare the triangulation stage only\n"
          "  --size WxH                      window size (default 1280x800)\n"
@@ -63,6 +65,10 @@ CommandLine parse_command_line(const std::vector<std::string>& arguments) {
         command.run.push_back(parse_stage(name));
     } else if (arg == "--fill-all") {
       command.fill_all = true;
+    } else if (arg == "--remesh") {
+      command.remesh = true;
+    } else if (arg == "--fair") {
+      command.fair = true;
     } else if (arg == "--compare") {
       command.compare = true;
     } else if (arg == "--compare-triangulation-only") {

@@ -16,6 +16,8 @@ struct CommandLine {
   std::optional<int> select_hole;
   std::vector<Stage> run;  // stages to run on the selected hole, in order
   bool fill_all = false;
+  bool remesh = false;  // remesh toward valence 6 after refinement
+  bool fair = false;    // fairing instead of umbrella smoothing
   bool compare = false;
   bool compare_triangulation_only = false;
   int width = 1280;

@@ -37,6 +37,12 @@ void mesh_opened(hv::Camera& camera, const hv::Session& session, hv::UiState& ui
 
 // Carries out the command line's actions on the session; false (with a message) on failure.
 bool run_script(const hv::CommandLine& command, hv::Session& session) {
+  if (command.remesh || command.fair) {
+    holefill::FillOptions options = session.options();
+    options.refine.remesh = options.refine.remesh || command.remesh;
+    if (command.fair) options.smooth.method = holefill::SmoothMethod::Fair;
+    session.set_options(options);
+  }
   if (command.select_hole) {
     if (*command.select_hole < 0 ||
         *command.select_hole >= static_cast<int>(session.holes().size())) {

@@ -20,6 +20,9 @@ TEST(CommandLine, ScriptedModeOptions) {
   EXPECT_EQ(c.width, 640);
   EXPECT_EQ(c.height, 480);
   EXPECT_EQ(c.screenshot, "out.png");
+  EXPECT_FALSE(c.remesh || c.fair);
+  const CommandLine quality = parse_command_line({"--remesh", "--fair"});
+  EXPECT_TRUE(quality.remesh && quality.fair);
 }
 
 TEST(CommandLine, RejectsWhatItCannotDo) {
