@@ -65,12 +65,10 @@ void BM_StageSmooth(benchmark::State& s) { stage_on_asset(s, Stage::Smoothed); }
 // time per new vertex (the counter) flat.
 void stage_scaling(benchmark::State& state, Stage last) {
   const double radius = static_cast<double>(state.range(0)) / 100.0;
-  const Mesh grid = testing::make_grid(161, [](double x, double y) {
-    return 0.2 * std::sin(3.0 * x) * std::cos(2.0 * y);
-  });
-  const Mesh original = testing::without_faces(grid, [&](const Point& c) {
-    return std::hypot(c[0] - 0.5, c[1] - 0.5) < radius;
-  });
+  const Mesh grid = testing::make_grid(
+      161, [](double x, double y) { return 0.2 * std::sin(3.0 * x) * std::cos(2.0 * y); });
+  const Mesh original = testing::without_faces(
+      grid, [&](const Point& c) { return std::hypot(c[0] - 0.5, c[1] - 0.5) < radius; });
   const auto holes = find_holes(original);
   FillOptions options;
   std::size_t new_vertices = 0;
@@ -94,9 +92,9 @@ void stage_scaling(benchmark::State& state, Stage last) {
     new_vertices = fill.patch.new_vertices.size();
   }
   state.counters["new_vertices"] = static_cast<double>(new_vertices);
-  state.counters["ns_per_new_vertex"] =
-      total_seconds * 1e9 / static_cast<double>(state.iterations()) /
-      static_cast<double>(std::max<std::size_t>(new_vertices, 1));
+  state.counters["ns_per_new_vertex"] = total_seconds * 1e9 /
+                                        static_cast<double>(state.iterations()) /
+                                        static_cast<double>(std::max<std::size_t>(new_vertices, 1));
 }
 
 void BM_RefineScaling(benchmark::State& s) { stage_scaling(s, Stage::Refined); }
@@ -116,8 +114,20 @@ void BM_FillAllHoles(benchmark::State& state) {
 BENCHMARK(BM_StageTriangulate)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StageRefine)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StageSmooth)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_RefineScaling)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SmoothScaling)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RefineScaling)
+    ->Arg(5)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(40)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SmoothScaling)
+    ->Arg(5)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(40)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FillAllHoles)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
 }  // namespace

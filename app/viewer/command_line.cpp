@@ -40,6 +40,7 @@ const char* usage() {
          "  --fair                          smooth by fairing instead of the umbrella operator\n"
          "  --compare                       show liepa (left) vs maxmin (right) on the hole\n"
          "  --compare-triangulation-only    compare the triangulation stage only\n"
+         "  --compare-smoothing             show umbrella (left) vs fair (right) instead\n"
          "  --size WxH                      window size (default 1280x800)\n"
          "  --screenshot OUT.png            render, save the window as PNG and exit\n"
          "  --frames N                      with --screenshot: render N frames (turning the\n"
@@ -74,6 +75,9 @@ CommandLine parse_command_line(const std::vector<std::string>& arguments) {
     } else if (arg == "--compare-triangulation-only") {
       command.compare = true;
       command.compare_triangulation_only = true;
+    } else if (arg == "--compare-smoothing") {
+      command.compare = true;
+      command.compare_smoothing = true;
     } else if (arg == "--size") {
       const std::string& size = value();
       const auto x = size.find('x');

@@ -20,6 +20,7 @@ struct CommandLine {
   bool fair = false;    // fairing instead of umbrella smoothing
   bool compare = false;
   bool compare_triangulation_only = false;
+  bool compare_smoothing = false;  // umbrella | fair instead of liepa | maxmin
   int width = 1280;
   int height = 800;
   std::filesystem::path screenshot;  // set: render, save this PNG and exit

@@ -3,27 +3,36 @@
 namespace holefill::viewer {
 namespace {
 
-ComparisonSide fill_side(const Mesh& mesh, const Hole& hole, FillOptions options,
-                         WeightKind weight) {
+ComparisonSide fill_side(const Mesh& mesh, const Hole& hole, const FillOptions& options,
+                         std::string label) {
   ComparisonSide side;
-  side.weight = weight;
+  side.label = std::move(label);
   side.mesh = mesh;
-  options.triangulate.weight = weight;
   side.fill = fill_hole(side.mesh, hole, options);
   return side;
 }
 
 }  // namespace
 
-Comparison compare_weights(const Mesh& mesh, const Hole& hole, const FillOptions& options,
-                           bool triangulation_only) {
-  FillOptions stages = options;
-  stages.last_stage = triangulation_only ? Stage::Triangulated : Stage::Smoothed;
+Comparison make_comparison(const Mesh& mesh, const Hole& hole, const FillOptions& options,
+                           CompareMode mode, bool triangulation_only) {
   Comparison comparison;
   comparison.hole_id = hole.id;
-  comparison.triangulation_only = triangulation_only;
-  comparison.left = fill_side(mesh, hole, stages, WeightKind::Liepa);
-  comparison.right = fill_side(mesh, hole, stages, WeightKind::MaxMin);
+  comparison.mode = mode;
+  FillOptions left = options, right = options;
+  if (mode == CompareMode::Weights) {
+    comparison.triangulation_only = triangulation_only;
+    left.last_stage = right.last_stage = triangulation_only ? Stage::Triangulated : Stage::Smoothed;
+    left.triangulate.weight = WeightKind::Liepa;
+    right.triangulate.weight = WeightKind::MaxMin;
+  } else {
+    left.last_stage = right.last_stage = Stage::Smoothed;
+    left.smooth.method = SmoothMethod::Umbrella;
+    right.smooth.method = SmoothMethod::Fair;
+  }
+  comparison.left =
+      fill_side(mesh, hole, left, mode == CompareMode::Weights ? "liepa" : "umbrella");
+  comparison.right = fill_side(mesh, hole, right, mode == CompareMode::Weights ? "maxmin" : "fair");
   return comparison;
 }
 

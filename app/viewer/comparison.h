@@ -1,29 +1,34 @@
-// The comparison view's data: one hole filled separately on two copies of a mesh, with liepa's
-// weight (left) and the paper's maxmin weight (right), each with its own statistics. No GL.
+// The comparison view's data: one hole filled separately on two copies of a mesh, each side with
+// its own statistics. Two comparisons: the triangulation weights (liepa left, the paper's maxmin
+// right) and the smoothing (the paper's umbrella operator left, fairing right). No GL.
 #pragma once
 
-#include <map>
+#include <string>
 
 #include "holefill/fill.h"
 
 namespace holefill::viewer {
 
+enum class CompareMode { Weights, Smoothing };
+
 struct ComparisonSide {
-  WeightKind weight = WeightKind::MaxMin;
+  std::string label;  // what differs on this side: "liepa", "maxmin", "umbrella", "fair"
   Mesh mesh;
   HoleFill fill;
 };
 
 struct Comparison {
   int hole_id = -1;
+  CompareMode mode = CompareMode::Weights;
   bool triangulation_only = false;
-  ComparisonSide left;   // liepa
-  ComparisonSide right;  // maxmin
+  ComparisonSide left;   // liepa, or umbrella
+  ComparisonSide right;  // maxmin, or fair
 };
 
-// Fills `hole` of copies of `mesh` with each weight and otherwise the same `options`; with
-// triangulation_only, stops after the triangulation stage.
-Comparison compare_weights(const Mesh& mesh, const Hole& hole, const FillOptions& options,
-                           bool triangulation_only);
+// Fills `hole` of two copies of `mesh` with `options` but for what `mode` compares. Weights: with
+// triangulation_only, both stop after the triangulation stage. Smoothing: both run every stage
+// (the smoothing is what differs), with options.smooth's fairing settings on the right.
+Comparison make_comparison(const Mesh& mesh, const Hole& hole, const FillOptions& options,
+                           CompareMode mode, bool triangulation_only);
 
 }  // namespace holefill::viewer

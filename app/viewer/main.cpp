@@ -63,6 +63,8 @@ bool run_script(const hv::CommandLine& command, hv::Session& session) {
   }
   if (command.fill_all) session.fill_all();
   session.set_compare_triangulation_only(command.compare_triangulation_only);
+  session.set_compare_mode(command.compare_smoothing ? hv::CompareMode::Smoothing
+                                                     : hv::CompareMode::Weights);
   session.set_compare(command.compare);
   return true;
 }

@@ -225,11 +225,19 @@ void statistics_section(Session& session) {
 
 void comparison_section(Session& session) {
   bool compare = session.compare();
-  if (ImGui::Checkbox("Compare liepa | maxmin", &compare)) session.set_compare(compare);
+  if (ImGui::Checkbox("Compare", &compare)) session.set_compare(compare);
   ImGui::SameLine();
-  bool triangulation_only = session.compare_triangulation_only();
-  if (ImGui::Checkbox("triangulation only", &triangulation_only)) {
-    session.set_compare_triangulation_only(triangulation_only);
+  int mode = session.compare_mode() == CompareMode::Weights ? 0 : 1;
+  ImGui::SetNextItemWidth(150.0f);
+  if (ImGui::Combo("##compare_mode", &mode, "liepa | maxmin\0umbrella | fair\0")) {
+    session.set_compare_mode(mode == 0 ? CompareMode::Weights : CompareMode::Smoothing);
+  }
+  if (session.compare_mode() == CompareMode::Weights) {
+    ImGui::SameLine();
+    bool triangulation_only = session.compare_triangulation_only();
+    if (ImGui::Checkbox("triangulation only", &triangulation_only)) {
+      session.set_compare_triangulation_only(triangulation_only);
+    }
   }
   const Comparison* comparison = session.comparison();
   if (!compare) return;
@@ -241,8 +249,7 @@ void comparison_section(Session& session) {
     for (const ComparisonSide* side : {&comparison->left, &comparison->right}) {
       ImGui::TableNextColumn();
       ImGui::PushID(side == &comparison->left ? "left" : "right");
-      ImGui::Text("%s (%s)", to_string(side->weight).c_str(),
-                  side == &comparison->left ? "left" : "right");
+      ImGui::Text("%s (%s)", side->label.c_str(), side == &comparison->left ? "left" : "right");
       const PatchStats& s = side->fill.stats;
       if (side->fill.failed()) {
         ImGui::TextColored(kErrorColor, "failed");

@@ -156,6 +156,12 @@ void Session::set_compare_triangulation_only(bool on) {
   comparison_stale_ = true;
 }
 
+void Session::set_compare_mode(CompareMode mode) {
+  if (mode == compare_mode_) return;
+  compare_mode_ = mode;
+  comparison_stale_ = true;
+}
+
 const Comparison* Session::comparison() {
   if (!compare_ || selected_ < 0) return nullptr;
   if (comparison_stale_ || !comparison_) {
@@ -166,7 +172,8 @@ const Comparison* Session::comparison() {
       if (step.hole_id != selected_)
         advance(mesh, holes_[step.hole_id], fills[step.hole_id], step.options);
     }
-    comparison_ = compare_weights(mesh, holes_[selected_], options_, compare_triangulation_only_);
+    comparison_ = make_comparison(mesh, holes_[selected_], options_, compare_mode_,
+                                  compare_triangulation_only_);
     comparison_stale_ = false;
     ++comparison_version_;
   }

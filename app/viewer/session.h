@@ -87,6 +87,9 @@ class Session {
   void set_compare(bool on);
   bool compare() const { return compare_; }
   void set_compare_triangulation_only(bool on);
+  // What the comparison sets side by side: the weights (default) or the smoothing.
+  void set_compare_mode(CompareMode mode);
+  CompareMode compare_mode() const { return compare_mode_; }
   bool compare_triangulation_only() const { return compare_triangulation_only_; }
   // Nothing when comparison is off or no hole is selected.
   const Comparison* comparison();
@@ -123,6 +126,7 @@ class Session {
 
   bool compare_ = false;
   bool compare_triangulation_only_ = false;
+  CompareMode compare_mode_ = CompareMode::Weights;
   bool comparison_stale_ = true;
   std::optional<Comparison> comparison_;
   std::uint64_t comparison_version_ = 0;

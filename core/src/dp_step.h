@@ -66,8 +66,8 @@ template <bool kPrune, class Weight, class NormalAcross>
   // sin(smallest angle) >= twice_area / longest^2 (up to a factor): a scale-free test.
   const bool degenerate = !(longest > 0.0) || twice_area <= kDegenerateSine * longest;
   if (degenerate) {
-    key = weight.combine(key, (std::uint64_t{1} << weight_key::kDegenerateShift) |
-                                  weight.angle_key(0.0));
+    key = weight.combine(
+        key, (std::uint64_t{1} << weight_key::kDegenerateShift) | weight.angle_key(0.0));
   } else if constexpr (Weight::kUsesMinAngle) {
     // The smallest angle lies opposite the shortest edge; it is acute, so its cosine is positive.
     const double cosine_scaled = bc2 <= ab2 && bc2 <= ac2 ? OpenMesh::dot(ab, ac)
@@ -100,8 +100,8 @@ template <bool kPrune, class Weight, class NormalAcross>
 // term only makes a key larger or keeps it, and only makes the area larger, so this never drops a
 // candidate the plain loop would keep, and the computed values are the same either way.
 template <bool kPrune, class Weight, class NormalAcross>
-[[gnu::always_inline]] inline void try_apex(const Weight& weight, const HolePolygon& polygon,
-                                            int i, int m, int k, const WeightValue& left,
+[[gnu::always_inline]] inline void try_apex(const Weight& weight, const HolePolygon& polygon, int i,
+                                            int m, int k, const WeightValue& left,
                                             const SideValue& right,
                                             const NormalAcross& normal_across, CellBest& best) {
   const std::uint64_t key = weight.combine(left.key, right.key);

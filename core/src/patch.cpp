@@ -17,6 +17,17 @@ double angle_at(const Point& corner, const Point& a, const Point& b) {
   const Point u = a - corner, v = b - corner;
   return std::atan2(OpenMesh::cross(u, v).norm(), OpenMesh::dot(u, v));
 }
+
+// Whether the angles at c and d opposite edge a-b clearly sum to at most pi, without atan2: for
+// angles in (0, pi), alpha + beta <= pi exactly when cot(alpha) + cot(beta) >= 0. The margin
+// leaves every case that rounding could decide either way to the exact test.
+bool clearly_delaunay(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const Point ca = a - c, cb = b - c, da = a - d, db = b - d;
+  const double sin_c = OpenMesh::cross(ca, cb).norm(), sin_d = OpenMesh::cross(da, db).norm();
+  if (!(sin_c > 0.0 && sin_d > 0.0)) return false;
+  const double cot_c = OpenMesh::dot(ca, cb) / sin_c, cot_d = OpenMesh::dot(da, db) / sin_d;
+  return cot_c + cot_d > 1e-6 * (std::abs(cot_c) + std::abs(cot_d) + 1.0);
+}
 }  // namespace
 
 const char* to_string(Stage stage) {
@@ -52,6 +63,7 @@ bool should_swap_edge(const Mesh& mesh, EdgeHandle edge) {
   const Point& b = mesh.point(mesh.to_vertex_handle(h0));
   const Point& c = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h0)));
   const Point& d = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h1)));
+  if (clearly_delaunay(a, b, c, d)) return false;  // most edges: no atan2 needed
   const double opposite_now = angle_at(c, a, b) + angle_at(d, a, b);
   const double opposite_swapped = angle_at(a, c, d) + angle_at(b, c, d);
   // On a curved patch both diagonals of a quad can see more than pi; swapping only when it lowers

@@ -87,8 +87,7 @@ void smooth_patch(Mesh& mesh, Patch& patch, const SmoothOptions& options) {
       const int begin = neighbour_start[i], end = neighbour_start[i + 1];
       Point sum(0.0, 0.0, 0.0);
       for (int j = begin; j < end; ++j) sum += position[neighbours[j]];
-      const Point umbrella =
-          end > begin ? sum / (end - begin) - position[i] : Point(0.0, 0.0, 0.0);
+      const Point umbrella = end > begin ? sum / (end - begin) - position[i] : Point(0.0, 0.0, 0.0);
       moved[i] = position[i] + options.step * umbrella;
     }
     std::copy(moved.begin(), moved.end(), position.begin());

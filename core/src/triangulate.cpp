@@ -51,7 +51,7 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
   std::vector<std::uint64_t> row_key(cells, 0), column_key(cells, 0);
   std::vector<double> row_area(cells, 0.0);
   std::vector<float> column_area(cells, 0.0f);
-  constexpr std::uint16_t kNone = 0xFFFF;  // apex of an infeasible cell
+  constexpr std::uint16_t kNone = 0xFFFF;     // apex of an infeasible cell
   std::vector<std::uint16_t> apex(cells, 0);  // O(i,k); polygon edges get 0 (never read)
   std::vector<bool> forbidden(cells, false);
   for (const auto& [a, b] : polygon.forbidden_chords) {
@@ -117,8 +117,7 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
         try_apex(m);
       }
       const bool feasible = best.apex >= 0;
-      row_key[cell] = column_key[column + i] =
-          feasible ? best.value.key : weight_key::kInfeasible;
+      row_key[cell] = column_key[column + i] = feasible ? best.value.key : weight_key::kInfeasible;
       row_area[cell] = best.value.area;
       column_area[column + i] = area_lower_bound(best.value.area);
       apex[cell] = feasible ? static_cast<std::uint16_t>(best.apex) : kNone;
@@ -189,10 +188,11 @@ WeightValue weight_value(const TriangulationQuality& quality, const TriangulateO
   const std::uint64_t degenerate = static_cast<std::uint64_t>(quality.degenerate)
                                    << weight_key::kDegenerateShift;
   return detail::with_weight(options, [&](const auto& weight) {
-    return WeightValue{weight_key::combine(
-                           degenerate, weight_key::combine(weight.angle_key(std::tan(quality.min_angle)),
-                                                           weight.dihedral_key(chord))),
-                       quality.area};
+    return WeightValue{
+        weight_key::combine(degenerate,
+                            weight_key::combine(weight.angle_key(std::tan(quality.min_angle)),
+                                                weight.dihedral_key(chord))),
+        quality.area};
   });
 }
 

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "holefill/holes.h"
+#include "holefill/patch.h"
 #include "test_meshes.h"
 
 namespace holefill {
@@ -203,6 +205,48 @@ TEST(Refine, LargerTauNeverGivesFewerVertices) {
     previous = fill.stats.new_vertices;
   }
   EXPECT_GT(previous, 0u);
+}
+
+// The relaxation's swap test against its definition written with angles: swap when the angles
+// opposite the edge sum to more than pi (by a 1e-9 margin) and the swap lowers that sum. Random
+// quads folded out of plane, and quads close to co-circular, where a shortcut could misjudge.
+TEST(Refine, SwapTestFollowsTheOppositeAngleRule) {
+  auto angle_at = [](const Point& corner, const Point& a, const Point& b) {
+    const Point u = a - corner, v = b - corner;
+    return std::atan2(OpenMesh::cross(u, v).norm(), OpenMesh::dot(u, v));
+  };
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int swaps = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    // a, b on the unit circle; c, d near it (exactly on it for some trials), lifted a little.
+    const double near = trial % 4 == 0 ? 0.0 : (trial % 4 == 1 ? 1e-9 : 0.3) * unit(rng);
+    auto on_circle = [&](double angle, double radius) {
+      const double lift = trial % 2 ? 0.2 * unit(rng) : 0.0;
+      return Point(radius * std::cos(angle), radius * std::sin(angle), lift);
+    };
+    const Point a = on_circle(M_PI * (0.5 + 0.4 * unit(rng)), 1.0);
+    const Point b = on_circle(-M_PI * (0.5 + 0.4 * unit(rng)), 1.0);
+    const Point c = on_circle(M_PI * (0.15 * unit(rng)), 1.0 + near);
+    const Point d = on_circle(M_PI * (1.0 + 0.15 * unit(rng)), 1.0 - near);
+    Mesh mesh;
+    const VertexHandle va = mesh.add_vertex(a), vb = mesh.add_vertex(b), vc = mesh.add_vertex(c),
+                       vd = mesh.add_vertex(d);
+    mesh.add_face(va, vc, vb);
+    mesh.add_face(vb, vd, va);
+    EdgeHandle shared;
+    for (const auto e : mesh.edges()) {
+      if (!mesh.is_boundary(e)) shared = e;
+    }
+    ASSERT_TRUE(shared.is_valid());
+    const double now = angle_at(c, a, b) + angle_at(d, a, b);
+    const double swapped = angle_at(a, c, d) + angle_at(b, c, d);
+    const bool expected = now > M_PI + 1e-9 && swapped < now - 1e-9;
+    EXPECT_EQ(should_swap_edge(mesh, shared), expected) << "trial " << trial;
+    swaps += expected;
+  }
+  EXPECT_GT(swaps, 500);  // both outcomes are exercised
+  EXPECT_LT(swaps, 3500);
 }
 
 // The sphere with its first hole filled up to refinement, ready to smooth.

@@ -86,8 +86,7 @@ TEST(Triangulate, MaxMinMaximisesTheSmallestAngleLikeBruteForce) {
                                                   polygon.forbidden_chords.end());
     const auto candidates = all_triangulations(0, n - 1, forbidden, n);
     // The paper's order (no fold limit) maximises the smallest angle outright.
-    const auto dp =
-        triangulate_polygon(polygon, {WeightKind::MaxMin, M_PI});
+    const auto dp = triangulate_polygon(polygon, {WeightKind::MaxMin, M_PI});
     ASSERT_EQ(dp.has_value(), !candidates.empty());
     if (!dp) continue;
     double best = 0.0;
@@ -95,7 +94,8 @@ TEST(Triangulate, MaxMinMaximisesTheSmallestAngleLikeBruteForce) {
       best = std::max(best, evaluate_triangulation(polygon, t).min_angle);
     }
     // Optimal up to the quantisation of angles in the weight's key.
-    EXPECT_NEAR(dp->quality.min_angle, best, kAngleResolution) << "trial " << trial << ", n = " << n;
+    EXPECT_NEAR(dp->quality.min_angle, best, kAngleResolution)
+        << "trial " << trial << ", n = " << n;
   }
 }
 

@@ -23,6 +23,8 @@ TEST(CommandLine, ScriptedModeOptions) {
   EXPECT_FALSE(c.remesh || c.fair);
   const CommandLine quality = parse_command_line({"--remesh", "--fair"});
   EXPECT_TRUE(quality.remesh && quality.fair);
+  const CommandLine smoothing = parse_command_line({"--select-hole", "0", "--compare-smoothing"});
+  EXPECT_TRUE(smoothing.compare && smoothing.compare_smoothing);
 }
 
 TEST(CommandLine, RejectsWhatItCannotDo) {

@@ -195,8 +195,8 @@ TEST(Session, ComparisonFillsTheSelectedHoleWithEachWeight) {
   session.set_compare_triangulation_only(true);
   const Comparison* comparison = session.comparison();
   ASSERT_NE(comparison, nullptr);
-  EXPECT_EQ(comparison->left.weight, WeightKind::Liepa);
-  EXPECT_EQ(comparison->right.weight, WeightKind::MaxMin);
+  EXPECT_EQ(comparison->left.label, "liepa");
+  EXPECT_EQ(comparison->right.label, "maxmin");
   EXPECT_EQ(comparison->left.fill.stage(), Stage::Triangulated);
   EXPECT_EQ(comparison->right.fill.stage(), Stage::Triangulated);
   // maxmin maximises the smallest angle, so it cannot do worse than liepa there, and on the
@@ -205,6 +205,37 @@ TEST(Session, ComparisonFillsTheSelectedHoleWithEachWeight) {
   EXPECT_NE(comparison->right.fill.stats.max_dihedral_deg,
             comparison->left.fill.stats.max_dihedral_deg);
   // The session's own mesh is untouched by the comparison.
+  EXPECT_EQ(session.fill(0).stage(), Stage::Original);
+}
+
+// Umbrella against fair: the same triangulation and refinement on both sides (same weight, same
+// tau), so the same patch connectivity, with the new vertices placed differently; the comparison
+// follows the mode switch and leaves the session's mesh alone.
+TEST(Session, ComparisonOfSmoothingFillsBothSidesAlikeButForTheSmoothing) {
+  Session session = bunny_session();
+  session.select(0);
+  session.set_compare(true);
+  session.set_compare_triangulation_only(true);  // ignored: smoothing is what differs
+  const auto weights_version = (session.comparison(), session.comparison_version());
+  session.set_compare_mode(CompareMode::Smoothing);
+  const Comparison* comparison = session.comparison();
+  ASSERT_NE(comparison, nullptr);
+  EXPECT_GT(session.comparison_version(), weights_version);
+  EXPECT_EQ(comparison->left.label, "umbrella");
+  EXPECT_EQ(comparison->right.label, "fair");
+  const HoleFill &umbrella = comparison->left.fill, &fair = comparison->right.fill;
+  ASSERT_FALSE(umbrella.failed() || fair.failed());
+  EXPECT_EQ(umbrella.stage(), Stage::Smoothed);
+  EXPECT_EQ(fair.stage(), Stage::Smoothed);
+  ASSERT_EQ(umbrella.patch.new_vertices.size(), fair.patch.new_vertices.size());
+  ASSERT_GT(umbrella.patch.new_vertices.size(), 0u);
+  EXPECT_EQ(comparison->left.mesh.n_faces(), comparison->right.mesh.n_faces());
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < umbrella.patch.new_vertices.size(); ++i) {
+    moved += comparison->left.mesh.point(umbrella.patch.new_vertices[i]) !=
+             comparison->right.mesh.point(fair.patch.new_vertices[i]);
+  }
+  EXPECT_EQ(moved, umbrella.patch.new_vertices.size());
   EXPECT_EQ(session.fill(0).stage(), Stage::Original);
 }
 

@@ -129,7 +129,8 @@ struct LiepaWeight {
 struct MaxMinWeight {
   static constexpr bool kUsesDihedral = true;
   static constexpr bool kUsesMinAngle = true;
-  std::uint64_t fold_lane = weight_key::dihedral_lane(weight_key::chord_of_angle(kDefaultFoldLimit));
+  std::uint64_t fold_lane =
+      weight_key::dihedral_lane(weight_key::chord_of_angle(kDefaultFoldLimit));
 
   static std::uint64_t combine(std::uint64_t a, std::uint64_t b) {
     return weight_key::combine(a, b);
