@@ -228,7 +228,7 @@ void comparison_section(Session& session) {
   if (ImGui::Checkbox("Compare", &compare)) session.set_compare(compare);
   ImGui::SameLine();
   int mode = session.compare_mode() == CompareMode::Weights ? 0 : 1;
-  ImGui::SetNextItemWidth(150.0f);
+  ImGui::SetNextItemWidth(125.0f);
   if (ImGui::Combo("##compare_mode", &mode, "liepa | maxmin\0umbrella | fair\0")) {
     session.set_compare_mode(mode == 0 ? CompareMode::Weights : CompareMode::Smoothing);
   }
