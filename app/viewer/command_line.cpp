@@ -38,6 +38,7 @@ const char* usage() {
          "  --fill-all                      fill every hole\n"
          "  --remesh                        refine with the remeshing pass (toward valence 6)\n"
          "  --fair                          smooth by fairing instead of the umbrella operator\n"
+         "  --fair-order 2|3                fairing's order (default 2; implies --fair)\n"
          "  --compare                       show liepa (left) vs maxmin (right) on the hole\n"
          "  --compare-triangulation-only    compare the triangulation stage only\n"
          "  --compare-smoothing             show umbrella (left) vs fair (right) instead\n"
@@ -70,6 +71,11 @@ CommandLine parse_command_line(const std::vector<std::string>& arguments) {
       command.remesh = true;
     } else if (arg == "--fair") {
       command.fair = true;
+    } else if (arg == "--fair-order") {
+      command.fair = true;
+      command.fair_order = parse_int(value(), arg);
+      if (command.fair_order != 2 && command.fair_order != 3)
+        throw std::invalid_argument("--fair-order takes 2 or 3");
     } else if (arg == "--compare") {
       command.compare = true;
     } else if (arg == "--compare-triangulation-only") {

@@ -18,6 +18,7 @@ struct CommandLine {
   bool fill_all = false;
   bool remesh = false;  // remesh toward valence 6 after refinement
   bool fair = false;    // fairing instead of umbrella smoothing
+  int fair_order = 2;   // with fair: 2 bi-Laplacian, 3 tri-Laplacian
   bool compare = false;
   bool compare_triangulation_only = false;
   bool compare_smoothing = false;  // umbrella | fair instead of liepa | maxmin

@@ -40,7 +40,10 @@ bool run_script(const hv::CommandLine& command, hv::Session& session) {
   if (command.remesh || command.fair) {
     holefill::FillOptions options = session.options();
     options.refine.remesh = options.refine.remesh || command.remesh;
-    if (command.fair) options.smooth.method = holefill::SmoothMethod::Fair;
+    if (command.fair) {
+      options.smooth.method = holefill::SmoothMethod::Fair;
+      options.smooth.fair.order = command.fair_order;
+    }
     session.set_options(options);
   }
   if (command.select_hole) {

@@ -158,12 +158,22 @@ void options_section(Session& session) {
         "After refinement: valence-driven flips and tangential relaxation of the "
         "patch (not in the paper)");
   }
-  int method = options.smooth.method == SmoothMethod::Fair ? 1 : 0;
+  // 0: umbrella; 1, 2: fairing of order 2 (bi-Laplacian) or 3 (tri-Laplacian).
+  const bool fair = options.smooth.method == SmoothMethod::Fair;
+  int method = fair ? options.smooth.fair.order - 1 : 0;
   ImGui::SetNextItemWidth(150.0f);
-  if (ImGui::Combo("smoothing", &method, "umbrella (paper)\0fair (bi-Laplacian)\0")) {
-    options.smooth.method = method == 1 ? SmoothMethod::Fair : SmoothMethod::Umbrella;
+  if (ImGui::Combo("smoothing", &method,
+                   "umbrella (paper)\0fair (order 2)\0fair (order 3)\0")) {
+    options.smooth.method = method > 0 ? SmoothMethod::Fair : SmoothMethod::Umbrella;
+    if (method > 0) options.smooth.fair.order = method + 1;
     changed = true;
   }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "umbrella: the paper's Laplacian smoothing; fair: bi- (order 2) or tri-Laplacian "
+        "(order 3) fairing that continues the surrounding curvature");
+  }
+  ImGui::BeginDisabled(fair);  // the umbrella operator's own settings
   ImGui::SetNextItemWidth(150.0f);
   changed |= ImGui::SliderInt("smoothing iterations", &options.smooth.iterations, 0, 100);
   float step = static_cast<float>(options.smooth.step);
@@ -172,6 +182,7 @@ void options_section(Session& session) {
     options.smooth.step = step;
     changed = true;
   }
+  ImGui::EndDisabled();
   if (changed) session.set_options(options);
 }
 

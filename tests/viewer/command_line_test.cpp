@@ -23,6 +23,8 @@ TEST(CommandLine, ScriptedModeOptions) {
   EXPECT_FALSE(c.remesh || c.fair);
   const CommandLine quality = parse_command_line({"--remesh", "--fair"});
   EXPECT_TRUE(quality.remesh && quality.fair);
+  EXPECT_EQ(quality.fair_order, 2);
+  EXPECT_EQ(parse_command_line({"--fair-order", "3"}).fair_order, 3);
   const CommandLine smoothing = parse_command_line({"--select-hole", "0", "--compare-smoothing"});
   EXPECT_TRUE(smoothing.compare && smoothing.compare_smoothing);
 }
@@ -34,6 +36,7 @@ TEST(CommandLine, RejectsWhatItCannotDo) {
   EXPECT_THROW(parse_command_line({"--select-hole"}), std::invalid_argument);
   EXPECT_THROW(parse_command_line({"a.obj", "b.obj"}), std::invalid_argument);
   EXPECT_THROW(parse_command_line({"--bogus"}), std::invalid_argument);
+  EXPECT_THROW(parse_command_line({"--fair-order", "4"}), std::invalid_argument);
   EXPECT_TRUE(parse_command_line({"--help"}).help);
 }
 
