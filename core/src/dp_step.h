@@ -20,6 +20,23 @@ inline Point unit_normal(const Point& a, const Point& b, const Point& c) {
 
 inline bool is_zero(const Point& p) { return p[0] == 0.0 && p[1] == 0.0 && p[2] == 0.0; }
 
+// The chords below stand for angles only between unit normals, as HolePolygon asks; these make
+// sure of it for callers that pass other lengths (a zero normal stays zero: nothing known).
+inline bool has_unit_outside_normals(const HolePolygon& polygon) {
+  for (const auto& normal : polygon.outside_normals) {
+    const double length2 = normal.sqrnorm();
+    if (length2 != 0.0 && std::abs(length2 - 1.0) > 1e-12) return false;
+  }
+  return true;
+}
+inline HolePolygon with_unit_outside_normals(HolePolygon polygon) {
+  for (auto& normal : polygon.outside_normals) {
+    const double length = normal.norm();
+    normal = length > 0.0 && length < INFINITY ? normal / length : Point(0.0, 0.0, 0.0);
+  }
+  return polygon;
+}
+
 // The chord |normal - other| standing for the dihedral angle against what lies across an edge:
 // nothing known there (zero) adds nothing, no orientation of our own (zero) is the worst fold.
 inline double chord_against(const Point& normal, const Point& other) {
@@ -64,7 +81,8 @@ template <bool kPrune, class Weight, class NormalAcross>
   const double ab2 = ab.sqrnorm(), ac2 = ac.sqrnorm(), bc2 = bc.sqrnorm();
   const double longest = std::max({ab2, ac2, bc2});
   // sin(smallest angle) >= twice_area / longest^2 (up to a factor): a scale-free test.
-  const bool degenerate = !(longest > 0.0) || twice_area <= kDegenerateSine * longest;
+  // Written so that NaN (coordinates whose products overflow) counts as degenerate.
+  const bool degenerate = !(longest > 0.0) || !(twice_area > kDegenerateSine * longest);
   if (degenerate) {
     key = weight.combine(
         key, (std::uint64_t{1} << weight_key::kDegenerateShift) | weight.angle_key(0.0));
@@ -109,7 +127,9 @@ template <bool kPrune, class Weight, class NormalAcross>
   if (kPrune && best.excludes(key, sides_lower_bound, m)) return;
   const Point& a = polygon.points[i];
   const Point cross = OpenMesh::cross(polygon.points[m] - a, polygon.points[k] - a);
-  const double half_area = 0.5 * cross.norm();
+  // An overflowing cross product (NaN or inf) weighs as an infinite area, so areas always compare.
+  const double norm = cross.norm();
+  const double half_area = norm < INFINITY ? 0.5 * norm : INFINITY;
   if (kPrune && best.excludes(key, sides_lower_bound + half_area, m)) return;
   const double area = (left.area + *right.area) + half_area;
   if (kPrune && best.excludes(key, area, m)) return;

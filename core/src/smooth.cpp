@@ -1,6 +1,5 @@
 #include "holefill/smooth.h"
 
-#include <algorithm>
 #include <vector>
 
 namespace holefill {
@@ -68,31 +67,33 @@ void smooth_patch(Mesh& mesh, Patch& patch, const SmoothOptions& options) {
   const std::size_t moving = patch.new_vertices.size();
   DenseIndex local(8 * moving + 16);
   std::vector<Point> position;
-  for (const auto v : patch.new_vertices) {
-    local.insert(v.idx());
-    position.push_back(mesh.point(v));
-  }
+  auto index_of = [&](VertexHandle v) {
+    const int index = local.insert(v.idx());
+    if (index == static_cast<int>(position.size())) position.push_back(mesh.point(v));
+    return index;
+  };
+  std::vector<int> own_index;  // of each new vertex, in patch.new_vertices' order
+  for (const auto v : patch.new_vertices) own_index.push_back(index_of(v));
   std::vector<int> neighbour_start{0}, neighbours;
   for (const auto v : patch.new_vertices) {
-    for (const auto q : mesh.vv_range(v)) {
-      const int index = local.insert(q.idx());
-      if (index == static_cast<int>(position.size())) position.push_back(mesh.point(q));
-      neighbours.push_back(index);
-    }
+    for (const auto q : mesh.vv_range(v)) neighbours.push_back(index_of(q));
     neighbour_start.push_back(static_cast<int>(neighbours.size()));
   }
   std::vector<Point> moved(moving);
   for (int it = 0; it < options.iterations; ++it) {
     for (std::size_t i = 0; i < moving; ++i) {
       const int begin = neighbour_start[i], end = neighbour_start[i + 1];
+      const Point& p = position[own_index[i]];
       Point sum(0.0, 0.0, 0.0);
       for (int j = begin; j < end; ++j) sum += position[neighbours[j]];
-      const Point umbrella = end > begin ? sum / (end - begin) - position[i] : Point(0.0, 0.0, 0.0);
-      moved[i] = position[i] + options.step * umbrella;
+      const Point umbrella = end > begin ? sum / (end - begin) - p : Point(0.0, 0.0, 0.0);
+      moved[i] = p + options.step * umbrella;
     }
-    std::copy(moved.begin(), moved.end(), position.begin());
+    for (std::size_t i = 0; i < moving; ++i) position[own_index[i]] = moved[i];
   }
-  for (std::size_t i = 0; i < moving; ++i) mesh.set_point(patch.new_vertices[i], position[i]);
+  for (std::size_t i = 0; i < moving; ++i) {
+    mesh.set_point(patch.new_vertices[i], position[own_index[i]]);
+  }
   patch.stage = Stage::Smoothed;
 }
 

@@ -55,6 +55,7 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
   std::vector<std::uint16_t> apex(cells, 0);  // O(i,k); polygon edges get 0 (never read)
   std::vector<bool> forbidden(cells, false);
   for (const auto& [a, b] : polygon.forbidden_chords) {
+    if (a == b || std::min(a, b) < 0 || std::max(a, b) >= n) continue;  // not a chord
     forbidden[row_index(n, std::min(a, b), std::max(a, b))] = true;
   }
 
@@ -231,6 +232,9 @@ TriangulationQuality evaluate_triangulation(const HolePolygon& polygon,
 std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polygon,
                                                         const TriangulateOptions& options) {
   if (polygon.points.size() < 3 || polygon.points.size() >= kMaxPolygonSize) return std::nullopt;
+  if (!detail::has_unit_outside_normals(polygon)) {
+    return triangulate_polygon(detail::with_unit_outside_normals(polygon), options);
+  }
   const std::size_t threshold = options.restricted.above_edges;
   if (threshold > 0 && polygon.points.size() > threshold) {
     if (auto restricted = triangulate_polygon_restricted(polygon, options)) return restricted;

@@ -140,7 +140,10 @@ std::optional<PolygonTriangulation> solve_restricted(const HolePolygon& polygon,
 
 std::optional<PolygonTriangulation> triangulate_polygon_restricted(
     const HolePolygon& polygon, const TriangulateOptions& options) {
-  if (polygon.points.size() < 3) return std::nullopt;
+  if (polygon.points.size() < 3 || polygon.points.size() >= kMaxPolygonSize) return std::nullopt;
+  if (!detail::has_unit_outside_normals(polygon)) {
+    return triangulate_polygon_restricted(detail::with_unit_outside_normals(polygon), options);
+  }
   return detail::with_weight(options, [&](const auto& weight) {
     return solve_restricted(polygon, weight, options.restricted);
   });

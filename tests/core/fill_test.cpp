@@ -307,5 +307,17 @@ TEST(Smooth, MatchesTheUmbrellaOperatorAppliedOnTheMesh) {
   for (const auto v : mesh.vertices()) EXPECT_EQ(mesh.point(v), reference.point(v)) << v.idx();
 }
 
+// A vertex listed twice among the patch's new vertices moves once, as the operator says.
+TEST(Smooth, AVertexListedTwiceMovesOnce) {
+  auto [before, mesh, fill] = refined_sphere();
+  ASSERT_GT(fill.patch.new_vertices.size(), 2u);
+  Mesh twice = mesh;
+  Patch doubled = fill.patch;
+  doubled.new_vertices.push_back(doubled.new_vertices[1]);
+  smooth_patch(mesh, fill.patch);
+  smooth_patch(twice, doubled);
+  for (const auto v : mesh.vertices()) EXPECT_EQ(mesh.point(v), twice.point(v)) << v.idx();
+}
+
 }  // namespace
 }  // namespace holefill

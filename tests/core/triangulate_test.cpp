@@ -244,6 +244,50 @@ bool is_polygon_triangulation(int n, const Triangles& triangles) {
   return true;
 }
 
+// Callers of the public API may pass outside normals of any length; the weights compare angles,
+// so only their directions may count.
+TEST(Triangulate, OutsideNormalsOfAnyLengthCountOnlyByDirection) {
+  std::mt19937 rng(43);
+  for (const int n : {12, 60}) {
+    const HolePolygon unit = random_hole(n, rng);
+    HolePolygon scaled = unit;
+    for (std::size_t i = 0; i < scaled.outside_normals.size(); ++i) {
+      scaled.outside_normals[i] *= (i % 3 == 0 ? 2.5 : (i % 3 == 1 ? 1e-3 : 1.0));
+    }
+    for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa}) {
+      TriangulateOptions options{weight};
+      const auto a = triangulate_polygon(unit, options), b = triangulate_polygon(scaled, options);
+      ASSERT_TRUE(a && b);
+      EXPECT_EQ(a->triangles, b->triangles) << to_string(weight) << ", n = " << n;
+      const auto c = triangulate_polygon_restricted(unit, options);
+      const auto d = triangulate_polygon_restricted(scaled, options);
+      ASSERT_TRUE(c && d);
+      EXPECT_EQ(c->triangles, d->triangles) << to_string(weight) << ", n = " << n;
+    }
+  }
+}
+
+// Coordinates so large that products overflow, or so small that they underflow, and chords that
+// are not chords: no crash, no out-of-range access (the sanitizer build checks), and the pruned
+// search still agrees with the plain loop.
+TEST(Triangulate, ExtremeCoordinatesAndBogusForbiddenChordsAreHandled) {
+  std::mt19937 rng(47);
+  for (const double scale : {1e160, 1e-170, 1.0}) {
+    HolePolygon polygon = random_hole(30, rng);
+    for (auto& p : polygon.points) p *= scale;
+    polygon.forbidden_chords = {{0, 0}, {-1, 3}, {2, 35}, {4, 5}};
+    for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}) {
+      TriangulateOptions fast{weight}, plain{weight};
+      plain.prune = false;
+      const auto a = triangulate_polygon(polygon, fast), b = triangulate_polygon(polygon, plain);
+      ASSERT_EQ(a.has_value(), b.has_value()) << scale;
+      if (!a) continue;
+      EXPECT_EQ(a->triangles, b->triangles) << to_string(weight) << ", scale " << scale;
+      EXPECT_TRUE(is_polygon_triangulation(30, a->triangles));
+    }
+  }
+}
+
 TEST(RestrictedSearch, GivesAValidTriangulationUpToThousandsOfEdges) {
   for (const int n : {7, 50, 301, 2500}) {
     std::mt19937 rng(n);

@@ -65,6 +65,7 @@ inline std::uint64_t quantize_unit(double x) {
 
 // Smallest angle from its tangent (in (0, sqrt 3]): larger angles give smaller lanes.
 inline std::uint64_t min_angle_lane(double tangent) {
+  if (std::isnan(tangent)) return kLaneMax;  // unknown: the worst, not (complemented) the best
   return kLaneMax - quantize_unit(tangent * (1.0 / std::sqrt(3.0)));
 }
 // Dihedral angle from the chord between the two unit normals (in [0, 2]).
@@ -90,7 +91,9 @@ inline std::uint64_t combine_lane_a(std::uint64_t a, std::uint64_t b) {
 }  // namespace weight_key
 
 // The largest angle difference that quantisation can tie, radians, for the smallest angle and for
-// dihedral angles below 90 degrees: the optima the weights define are exact up to this.
+// dihedral angles below 90 degrees. A weight's leading angle term (liepa's largest dihedral,
+// maxmin's smallest angle under a fold limit of pi) is optimal up to this; later terms are
+// optimised only among the sub-polygons' best values, as in any bottleneck DP of this kind.
 inline constexpr double kAngleResolution = 4.5e-5;
 
 // A weight's value: smaller is better.
