@@ -1,6 +1,7 @@
 // The dynamic program alone, per weight and hole size (the paper's bottleneck, Table I): the full
 // search (pruned, and the plain loop for reference) and the restricted search for large holes.
 #include <benchmark/benchmark.h>
+#include <sys/resource.h>
 
 #include <initializer_list>
 
@@ -22,6 +23,11 @@ void triangulate(benchmark::State& state, WeightKind weight, Search search) {
     benchmark::DoNotOptimize(result);
   }
   state.counters["edges"] = static_cast<double>(state.range(0));
+  // The process's peak resident memory so far: a size's own peak when it runs alone, e.g.
+  // --benchmark_filter='TriangulateMaxMin/2000$' (later benchmarks inherit earlier peaks).
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  state.counters["peak_rss_MB"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
 void BM_TriangulateMaxMin(benchmark::State& s) { triangulate(s, WeightKind::MaxMin, Search::Full); }
@@ -49,7 +55,7 @@ const bool kRegistered = [] {
   sizes(benchmark::RegisterBenchmark("BM_TriangulateLiepa", BM_TriangulateLiepa),
         {50, 100, 200, 400, 500, 800, 2000});
   sizes(benchmark::RegisterBenchmark("BM_TriangulateArea", BM_TriangulateArea),
-        {50, 100, 200, 400, 500, 800});
+        {50, 100, 200, 400, 500, 800, 2000});
   sizes(
       benchmark::RegisterBenchmark("BM_TriangulateMaxMinPlainLoop", BM_TriangulateMaxMinPlainLoop),
       {100, 400});
