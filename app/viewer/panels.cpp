@@ -162,8 +162,7 @@ void options_section(Session& session) {
   const bool fair = options.smooth.method == SmoothMethod::Fair;
   int method = fair ? options.smooth.fair.order - 1 : 0;
   ImGui::SetNextItemWidth(150.0f);
-  if (ImGui::Combo("smoothing", &method,
-                   "umbrella (paper)\0fair (order 2)\0fair (order 3)\0")) {
+  if (ImGui::Combo("smoothing", &method, "umbrella (paper)\0fair (order 2)\0fair (order 3)\0")) {
     options.smooth.method = method > 0 ? SmoothMethod::Fair : SmoothMethod::Umbrella;
     if (method > 0) options.smooth.fair.order = method + 1;
     changed = true;

@@ -92,7 +92,8 @@ TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c
 double angle_between_normals(const Point& n1, const Point& n2);
 
 // The value options.weight gives a triangulation of this quality (what the dynamic program
-// minimises, up to its dihedral terms being taken against the neighbouring sub-polygons' triangles).
+// minimises, up to its dihedral terms being taken against the neighbouring sub-polygons'
+// triangles).
 WeightValue weight_value(const TriangulationQuality& quality, const TriangulateOptions& options);
 
 // Recomputes the quality of a given triangulation of `polygon` from scratch, edge by edge.
