@@ -20,6 +20,28 @@ inline Point unit_normal(const Point& a, const Point& b, const Point& c) {
 
 inline bool is_zero(const Point& p) { return p[0] == 0.0 && p[1] == 0.0 && p[2] == 0.0; }
 
+// What triangle (a, b, c)'s smallest angle needs, given twice its area: whether the triangle is
+// degenerate, and the dot product of the two edges at its smallest angle (the angle is
+// atan2(twice_area, dot), its tangent twice_area / dot). Shared by measure_triangle and the DP.
+struct SmallestAngle {
+  bool degenerate = true;
+  double dot = 0.0;
+};
+inline SmallestAngle smallest_angle(const Point& a, const Point& b, const Point& c,
+                                    double twice_area) {
+  const Point ab = b - a, ac = c - a, bc = c - b;
+  const double ab2 = ab.sqrnorm(), ac2 = ac.sqrnorm(), bc2 = bc.sqrnorm();
+  const double longest = std::max({ab2, ac2, bc2});
+  // sin(smallest angle) >= twice_area / longest^2 (up to a factor): a scale-free test, written so
+  // that NaN (coordinates whose products overflow) counts as degenerate.
+  if (!(longest > 0.0) || !(twice_area > kDegenerateSine * longest)) return {};
+  // The smallest angle lies opposite the shortest edge.
+  const double dot = bc2 <= ab2 && bc2 <= ac2 ? OpenMesh::dot(ab, ac)
+                     : ac2 <= ab2             ? -OpenMesh::dot(ab, bc)
+                                              : OpenMesh::dot(ac, bc);
+  return {false, dot};
+}
+
 // The chords below stand for angles only between unit normals, as HolePolygon asks; these make
 // sure of it for callers that pass other lengths (a zero normal stays zero: nothing known).
 inline bool has_unit_outside_normals(const HolePolygon& polygon) {
@@ -73,25 +95,15 @@ template <bool kPrune, class Weight, class NormalAcross>
 [[gnu::noinline]] void finish_apex(const Weight& weight, const HolePolygon& polygon, int i, int m,
                                    int k, std::uint64_t key, double area, const Point& cross,
                                    const NormalAcross& normal_across, CellBest& best) {
-  const Point& a = polygon.points[i];
-  const Point& b = polygon.points[m];
-  const Point& c = polygon.points[k];
-  const Point ab = b - a, ac = c - a, bc = c - b;
   const double twice_area = cross.norm();
-  const double ab2 = ab.sqrnorm(), ac2 = ac.sqrnorm(), bc2 = bc.sqrnorm();
-  const double longest = std::max({ab2, ac2, bc2});
-  // sin(smallest angle) >= twice_area / longest^2 (up to a factor): a scale-free test.
-  // Written so that NaN (coordinates whose products overflow) counts as degenerate.
-  const bool degenerate = !(longest > 0.0) || !(twice_area > kDegenerateSine * longest);
-  if (degenerate) {
+  const SmallestAngle angle =
+      smallest_angle(polygon.points[i], polygon.points[m], polygon.points[k], twice_area);
+  if (angle.degenerate) {
     key = weight.combine(
         key, (std::uint64_t{1} << weight_key::kDegenerateShift) | weight.angle_key(0.0));
   } else if constexpr (Weight::kUsesMinAngle) {
-    // The smallest angle lies opposite the shortest edge; it is acute, so its cosine is positive.
-    const double cosine_scaled = bc2 <= ab2 && bc2 <= ac2 ? OpenMesh::dot(ab, ac)
-                                 : ac2 <= ab2             ? -OpenMesh::dot(ab, bc)
-                                                          : OpenMesh::dot(ac, bc);
-    const double tangent = cosine_scaled > 0.0 ? twice_area / cosine_scaled : std::sqrt(3.0);
+    // The smallest angle is acute, so its dot product is positive.
+    const double tangent = angle.dot > 0.0 ? twice_area / angle.dot : std::sqrt(3.0);
     key = weight.combine(key, weight.angle_key(tangent));
   }
   if constexpr (Weight::kUsesDihedral) {

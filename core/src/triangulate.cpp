@@ -10,7 +10,6 @@ namespace holefill {
 namespace {
 
 using detail::is_zero;
-using detail::kDegenerateSine;
 using detail::unit_normal;
 
 // Cell (i, k), 0 <= i < k < n, of the triangular tables, stored row by row (row i holds
@@ -161,21 +160,11 @@ bool parse_weight(const std::string& text, WeightKind& kind) {
 TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c,
                                   bool with_min_angle) {
   TriangleMeasures t;
-  const double ab = (b - a).sqrnorm(), bc = (c - b).sqrnorm(), ca = (a - c).sqrnorm();
   const double twice_area = OpenMesh::cross(b - a, c - a).norm();
   t.area = 0.5 * twice_area;
-  const double longest = std::max({ab, bc, ca});
-  // sin(smallest angle) >= twice_area / longest^2 (up to a factor), a scale-free test.
-  t.degenerate = !(longest > 0.0) || twice_area <= kDegenerateSine * longest;
-  if (t.degenerate || !with_min_angle) return t;
-  // The smallest angle lies opposite the shortest edge.
-  if (bc <= ab && bc <= ca) {
-    t.min_angle = std::atan2(twice_area, OpenMesh::dot(b - a, c - a));
-  } else if (ca <= ab) {
-    t.min_angle = std::atan2(twice_area, OpenMesh::dot(a - b, c - b));
-  } else {
-    t.min_angle = std::atan2(twice_area, OpenMesh::dot(a - c, b - c));
-  }
+  const detail::SmallestAngle angle = detail::smallest_angle(a, b, c, twice_area);
+  t.degenerate = angle.degenerate;
+  if (!t.degenerate && with_min_angle) t.min_angle = std::atan2(twice_area, angle.dot);
   return t;
 }
 
