@@ -1,0 +1,19 @@
+// Whole files in and out: the bytes a reader scans, and the one place a written file reaches the
+// disk (atomically).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace holefill::io {
+
+// The whole contents of the regular file at `path`. Throws FileError when it is missing, a
+// directory or another non-regular file, or cannot be opened or read (with the system's reason).
+std::string read_file_bytes(const std::filesystem::path& path);
+
+// Puts `bytes` at `path`: either the whole file appears there or nothing changes (a temporary
+// file in the same folder, then a rename). Throws FileError when the folder is missing, `path`
+// is a directory, or the write or rename fails.
+void write_file_atomically(const std::filesystem::path& path, const std::string& bytes);
+
+}  // namespace holefill::io

@@ -1,0 +1,125 @@
+// The dispatcher: picks the reader by contents and extension, turns its polygons into a mesh,
+// and writes a mesh through the writer and one atomic file write.
+#include "holefill/io.h"
+
+#include <OpenMesh/Core/System/omstream.hh>
+#include <algorithm>
+
+#include "file_bytes.h"
+#include "readers.h"
+#include "soup_to_mesh.h"
+#include "text_scan.h"
+#include "writers.h"
+
+namespace holefill {
+namespace fs = std::filesystem;
+namespace {
+
+std::string lower_extension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+std::string upper(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return text;
+}
+
+// The format to read `bytes` as: the contents' where they are unmistakable (with a warning when
+// the extension says otherwise), else the extension's.
+io::Format choose_format(const std::string& bytes, const fs::path& name, LoadReport& report) {
+  const std::string ext = lower_extension(name);
+  const io::Format by_name = io::format_of_extension(ext);
+  const io::Format by_content = io::sniff(bytes);
+  if (by_content == io::Format::Unknown || by_content == by_name) {
+    if (by_name == io::Format::Unknown) {
+      io::fail(name, "unsupported file type '" + ext + "' (use .obj, .off, .ply or .stl)");
+    }
+    return by_name;
+  }
+  const std::string read_as = upper(io::name_of(by_content));
+  report.warnings.push_back(by_name == io::Format::Unknown
+                                ? "the extension '" + ext +
+                                      "' is not a mesh format; the contents are " + read_as +
+                                      " and were read as such"
+                                : "the contents are " + read_as + ", not what the extension '" +
+                                      ext + "' says; read as " + read_as);
+  return by_content;
+}
+
+io::Soup read_soup(io::Format format, std::string_view bytes, const fs::path& name,
+                   LoadReport& report) {
+  switch (format) {
+    case io::Format::Obj:
+      return io::parse_obj(bytes, name, report);
+    case io::Format::Off:
+      return io::parse_off(bytes, name);
+    case io::Format::Ply:
+      return io::parse_ply(bytes, name);
+    case io::Format::Stl:
+      return io::parse_stl(bytes, name);
+    case io::Format::Unknown:
+      break;
+  }
+  io::fail(name, "unsupported file type");
+}
+
+bool has_deleted_elements(const Mesh& mesh) {
+  const auto live_vertices =
+      static_cast<std::size_t>(std::distance(mesh.vertices().begin(), mesh.vertices().end()));
+  const auto live_faces =
+      static_cast<std::size_t>(std::distance(mesh.faces().begin(), mesh.faces().end()));
+  return live_vertices != mesh.n_vertices() || live_faces != mesh.n_faces();
+}
+
+}  // namespace
+
+const std::vector<std::string>& readable_extensions() {
+  static const std::vector<std::string> extensions{".obj", ".off", ".ply", ".stl"};
+  return extensions;
+}
+
+const std::vector<std::string>& writable_extensions() {
+  static const std::vector<std::string> extensions{".obj", ".off", ".ply"};
+  return extensions;
+}
+
+Mesh load_mesh_from_memory(const std::string& bytes, const fs::path& name, LoadReport* report) {
+  LoadReport local;
+  LoadReport& out = report ? *report : local;
+  out = LoadReport{};
+  // OpenMesh prints why add_face refuses a face; we count those faces and say so instead.
+  omerr().disable();
+  if (bytes.empty()) io::fail(name, "is empty");
+  const io::Format format = choose_format(bytes, name, out);
+  out.format = io::name_of(format);
+  Mesh mesh = io::build_mesh(read_soup(format, bytes, name, out), out);
+  if (mesh.n_faces() == 0) throw InvalidMeshError(name, "contains no faces");
+  io::add_warnings(out);
+  return mesh;
+}
+
+Mesh load_mesh(const fs::path& path, LoadReport* report) {
+  return load_mesh_from_memory(io::read_file_bytes(path), path, report);
+}
+
+void save_mesh(const Mesh& mesh, const fs::path& path) {
+  const std::string ext = lower_extension(path);
+  const auto& writable = writable_extensions();
+  if (std::find(writable.begin(), writable.end(), ext) == writable.end()) {
+    throw FileError(path, "cannot write '" + ext + "' files (use .obj, .off or .ply)");
+  }
+  // Indices in the file must count live elements only.
+  if (has_deleted_elements(mesh)) {
+    Mesh compacted = mesh;
+    compacted.garbage_collection();
+    io::write_file_atomically(path, io::mesh_file_bytes(compacted, ext));
+  } else {
+    io::write_file_atomically(path, io::mesh_file_bytes(mesh, ext));
+  }
+}
+
+}  // namespace holefill

@@ -1,0 +1,124 @@
+#include <algorithm>
+#include <charconv>
+#include <cstring>
+#include <string>
+
+#include "readers.h"
+#include "text_scan.h"
+
+namespace holefill::io {
+namespace fs = std::filesystem;
+
+bool parse_off_keyword(std::string_view keyword, bool& three_dimensional) {
+  constexpr std::string_view kOff = "OFF";
+  if (keyword.size() < kOff.size() || keyword.substr(keyword.size() - kOff.size()) != kOff) {
+    return false;
+  }
+  std::string_view prefix = keyword.substr(0, keyword.size() - kOff.size());
+  if (prefix.substr(0, 2) == "ST") prefix.remove_prefix(2);
+  for (const char letter : {'C', 'N', '4', 'n'}) {
+    if (!prefix.empty() && prefix.front() == letter) prefix.remove_prefix(1);
+  }
+  three_dimensional = keyword.find_first_of("4n") == std::string_view::npos;
+  return prefix.empty();
+}
+
+Soup parse_off(std::string_view text, const fs::path& path) {
+  require_text(text, path, "OFF");
+  Lines lines(text);
+  // The next line with content, comments ('#' to the end of the line) removed.
+  auto next_content = [&lines](std::string_view& line) {
+    while (lines.next(line)) {
+      line = line.substr(0, line.find('#'));
+      skip_blanks(line);
+      if (!line.empty()) return true;
+    }
+    return false;
+  };
+  std::string_view line;
+  if (!next_content(line)) fail(path, "holds no OFF header, only blank or comment lines");
+  std::string_view rest = line;
+  const std::string_view keyword = take_token(rest);
+  bool three_dimensional = true;
+  if (!parse_off_keyword(keyword, three_dimensional)) {
+    fail(path, "does not start with an OFF header (found " + quoted(keyword) + ")");
+  }
+  if (!three_dimensional) {
+    fail(path, "only 3D OFF files are supported (header " + quoted(keyword) + ")");
+  }
+  skip_blanks(rest);
+  if (rest.substr(0, 6) == "BINARY") {
+    fail(path, "binary OFF is not supported; save it as ASCII OFF, PLY or OBJ");
+  }
+  if (rest.empty() && !next_content(rest)) fail(path, "ends after its header keyword");
+  const std::size_t counts_line = lines.number();
+  long long counts[2] = {0, 0};
+  for (auto& count : counts) {
+    const std::string_view token = take_token(rest);
+    if (!parse_integer(token, count) || count < 0) {
+      fail(path, at_line(counts_line) + "the header needs vertex and face counts" +
+                     (token.empty() ? std::string() : ", got " + quoted(token)));
+    }
+  }
+  const auto vertex_count = static_cast<unsigned long long>(counts[0]);
+  const auto face_count = static_cast<unsigned long long>(counts[1]);
+  // A vertex takes at least 6 bytes ("0 0 0\n"), a face at least 2 ("0\n"): a header that
+  // promises more than the file can hold is corrupt, and must not make us allocate for it.
+  const unsigned long long room = lines.remaining() + 1;
+  if (vertex_count > room / 6 || face_count > room / 2 ||
+      vertex_count * 6 + face_count * 2 > room + 1) {
+    fail(path, at_line(counts_line) + "the header promises " + std::to_string(vertex_count) +
+                   " vertices and " + std::to_string(face_count) +
+                   " faces, more than the remaining " + std::to_string(lines.remaining()) +
+                   " bytes of the file can hold (corrupt header or truncated file)");
+  }
+  Soup soup;
+  soup.positions.reserve(vertex_count);
+  for (unsigned long long v = 0; v < vertex_count; ++v) {
+    if (!next_content(line)) {
+      fail(path, "ends after " + std::to_string(v) + " of its " + std::to_string(vertex_count) +
+                     " vertices (truncated?)");
+    }
+    Point p;
+    for (int axis = 0; axis < 3; ++axis) {
+      const std::string_view token = take_token(line);
+      if (!parse_double(token, p[axis])) {
+        fail(path, at_line(lines.number()) + "vertex needs 3 numbers" +
+                       (token.empty() ? std::string() : ", got " + quoted(token)));
+      }
+    }
+    require_finite(p, v, lines.number(), path);
+    soup.positions.push_back(p);
+  }
+  for (unsigned long long f = 0; f < face_count; ++f) {
+    if (!next_content(line)) {
+      fail(path, "ends after " + std::to_string(f) + " of its " + std::to_string(face_count) +
+                     " faces (truncated?)");
+    }
+    long long corner_count = 0;
+    const std::string_view count_token = take_token(line);
+    if (!parse_integer(count_token, corner_count) || corner_count < 0) {
+      fail(path, at_line(lines.number()) + "a face must start with its number of corners, got " +
+                     quoted(count_token));
+    }
+    for (long long c = 0; c < corner_count; ++c) {
+      const std::string_view token = take_token(line);
+      long long index = 0;
+      if (!parse_integer(token, index)) {
+        fail(path, at_line(lines.number()) + "face needs " + std::to_string(corner_count) +
+                       " vertex indices" +
+                       (token.empty() ? std::string() : ", got " + quoted(token)));
+      }
+      if (index < 0 || static_cast<unsigned long long>(index) >= vertex_count) {
+        fail(path, at_line(lines.number()) + "face refers to vertex " + std::to_string(index) +
+                       ", but the file has " + std::to_string(vertex_count) +
+                       " vertices (numbered from 0)");
+      }
+      soup.corners.push_back(static_cast<int>(index));
+    }
+    soup.end_face(soup.corners.size(), lines.number());
+  }
+  return soup;
+}
+
+}  // namespace holefill::io

@@ -1,0 +1,46 @@
+// One reader per format: each turns a file's bytes into a Soup or throws FileError naming the
+// file, the line or record where it can, and the reason. sniff() tells the formats apart.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string_view>
+
+#include "holefill/io.h"
+#include "soup.h"
+
+namespace holefill::io {
+
+enum class Format { Obj, Off, Ply, Stl, Unknown };
+
+// "obj", "off", "ply", "stl" or "unknown".
+const char* name_of(Format format);
+
+// The format an extension (lower case, with the dot) names, or Unknown.
+Format format_of_extension(const std::string& ext);
+
+// The format the contents clearly are (a PLY or OFF header, a binary STL's size, ...), or Unknown.
+Format sniff(std::string_view bytes);
+
+// OBJ: v and f lines (polygons of any size; relative indices); lines, points and curves are
+// counted in report.elements_ignored.
+Soup parse_obj(std::string_view text, const std::filesystem::path& path, LoadReport& report);
+
+// ASCII OFF, 3D, with the optional ST/C/N prefixes of the keyword.
+Soup parse_off(std::string_view text, const std::filesystem::path& path);
+
+// PLY, ASCII or binary of either byte order: the vertex element's x, y, z and the face
+// element's vertex index list.
+Soup parse_ply(std::string_view bytes, const std::filesystem::path& path);
+
+// STL, binary (when the size matches the header's count) or ASCII; equal corners are welded.
+Soup parse_stl(std::string_view bytes, const std::filesystem::path& path);
+
+// "OFF" with the optional prefixes of the format: ST (texture), C (colour), N (normal), 4 (4D),
+// n (nD). Returns false when `keyword` is no OFF keyword.
+bool parse_off_keyword(std::string_view keyword, bool& three_dimensional);
+
+// The triangle count in a binary STL header, and whether the file's size agrees with it.
+bool binary_stl_size_matches(std::string_view bytes, std::uint32_t& count);
+
+}  // namespace holefill::io

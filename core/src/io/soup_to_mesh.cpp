@@ -1,0 +1,371 @@
+#include "soup_to_mesh.h"
+
+#include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "holefill/triangulate.h"
+
+namespace holefill::io {
+namespace fs = std::filesystem;
+
+namespace {
+
+using Triangle = std::array<int, 3>;
+
+// Polygons up to this many corners are triangulated by the max-min angle dynamic program (which
+// also keeps a non-convex polygon from folding over itself); larger ones as a fan.
+constexpr std::size_t kMaxOptimalPolygon = 64;
+
+void triangulate_face(const std::vector<Point>& positions, std::vector<int> corners,
+                      std::vector<Triangle>& triangles, LoadReport& report) {
+  // Repeated consecutive corners (the last one repeating the first included) add nothing.
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  while (corners.size() > 1 && corners.front() == corners.back()) corners.pop_back();
+  if (corners.size() < 3) {
+    ++report.degenerate_faces_dropped;
+    return;
+  }
+  const int n = static_cast<int>(corners.size());
+  std::vector<Triangle> pieces;
+  if (n == 3) {
+    pieces.push_back({corners[0], corners[1], corners[2]});
+  } else {
+    ++report.polygons_triangulated;
+    if (corners.size() <= kMaxOptimalPolygon) {
+      HolePolygon polygon;
+      for (const int c : corners) polygon.points.push_back(positions[c]);
+      polygon.outside_normals.assign(corners.size(), Point(0.0, 0.0, 0.0));
+      for (int i = 0; i < n; ++i) {
+        for (int k = i + 1; k < n; ++k) {
+          if (corners[i] == corners[k]) polygon.forbidden_chords.emplace_back(i, k);
+        }
+      }
+      if (const auto optimal = triangulate_polygon(polygon, TriangulateOptions{})) {
+        for (const auto& t : optimal->triangles) {
+          pieces.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
+        }
+      }
+    }
+    if (pieces.empty()) {
+      for (int c = 1; c + 1 < n; ++c) pieces.push_back({corners[0], corners[c], corners[c + 1]});
+    }
+  }
+  bool dropped = false;
+  for (const auto& t : pieces) {
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
+      dropped = true;
+    } else {
+      triangles.push_back(t);
+    }
+  }
+  if (dropped) ++report.degenerate_faces_dropped;
+}
+
+// Removes triangles with the same corners in the same cyclic order as an earlier one.
+std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles) {
+  auto canonical = [](Triangle t) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    return t;
+  };
+  std::vector<std::pair<Triangle, std::size_t>> sorted;
+  sorted.reserve(triangles.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    sorted.emplace_back(canonical(triangles[i]), i);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<char> duplicate(triangles.size(), 0);
+  std::size_t count = 0;
+  for (std::size_t i = 1; i < sorted.size(); ++i) {
+    if (sorted[i].first == sorted[i - 1].first) {
+      duplicate[sorted[i].second] = 1;
+      ++count;
+    }
+  }
+  if (count == 0) return 0;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    if (!duplicate[i]) triangles[kept++] = triangles[i];
+  }
+  triangles.resize(kept);
+  return count;
+}
+
+// One triangle's use of an undirected edge.
+struct EdgeUse {
+  std::uint64_t edge;  // smaller vertex index in the high half
+  int triangle;
+  bool forward;  // runs from the smaller vertex index to the larger
+  bool operator<(const EdgeUse& other) const {
+    return edge != other.edge ? edge < other.edge : triangle < other.triangle;
+  }
+};
+
+std::vector<EdgeUse> edge_uses(const std::vector<Triangle>& triangles) {
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * triangles.size());
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    for (int c = 0; c < 3; ++c) {
+      const auto a = static_cast<std::uint32_t>(triangles[t][c]);
+      const auto b = static_cast<std::uint32_t>(triangles[t][(c + 1) % 3]);
+      uses.push_back({static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b), t, a < b});
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+  return uses;
+}
+
+// Calls visit(first, last) for each run of uses of one edge.
+template <class Visit>
+void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
+    visit(i, j);
+    i = j;
+  }
+}
+
+// Flips triangles so that neighbours across every edge with exactly two triangles use it in
+// opposite directions; per connected piece, the orientation most triangles have wins. Returns
+// the number flipped. Pieces that cannot be oriented (a Moebius strip) keep a conflict, which
+// detach_non_manifold resolves.
+std::size_t orient_consistently(std::vector<Triangle>& triangles) {
+  const int count = static_cast<int>(triangles.size());
+  const std::vector<EdgeUse> uses = edge_uses(triangles);
+  // Up to three neighbours per triangle, and whether each must take the opposite orientation.
+  std::vector<std::array<int, 3>> neighbour(triangles.size(), {-1, -1, -1});
+  std::vector<std::array<bool, 3>> must_flip(triangles.size(), {false, false, false});
+  std::vector<int> links(triangles.size(), 0);
+  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+    if (j - i != 2 || uses[i].triangle == uses[i + 1].triangle) return;
+    const EdgeUse &a = uses[i], &b = uses[i + 1];
+    const bool opposite = a.forward == b.forward;
+    neighbour[a.triangle][links[a.triangle]] = b.triangle;
+    must_flip[a.triangle][links[a.triangle]++] = opposite;
+    neighbour[b.triangle][links[b.triangle]] = a.triangle;
+    must_flip[b.triangle][links[b.triangle]++] = opposite;
+  });
+  std::vector<signed char> flip(triangles.size(), -1);
+  std::vector<int> piece, queue;
+  std::size_t flipped = 0;
+  for (int seed = 0; seed < count; ++seed) {
+    if (flip[seed] >= 0) continue;
+    piece.clear();
+    queue.assign(1, seed);
+    flip[seed] = 0;
+    while (!queue.empty()) {
+      const int t = queue.back();
+      queue.pop_back();
+      piece.push_back(t);
+      for (int l = 0; l < links[t]; ++l) {
+        const int other = neighbour[t][l];
+        if (flip[other] >= 0) continue;
+        flip[other] = static_cast<signed char>(flip[t] ^ (must_flip[t][l] ? 1 : 0));
+        queue.push_back(other);
+      }
+    }
+    const auto marked = static_cast<std::size_t>(
+        std::count_if(piece.begin(), piece.end(), [&](int t) { return flip[t] == 1; }));
+    const signed char turn = 2 * marked > piece.size() ? 0 : 1;
+    for (const int t : piece) {
+      if (flip[t] != turn) continue;
+      std::swap(triangles[t][1], triangles[t][2]);
+      ++flipped;
+    }
+  }
+  return flipped;
+}
+
+// Marks the triangles that must be kept apart so that every edge is used at most twice, in
+// opposite directions: on each edge the first triangle and the first one after it running the
+// other way stay; later ones (a third sheet on the edge, a fin) are detached.
+std::vector<char> detach_non_manifold(const std::vector<EdgeUse>& uses, std::size_t triangles) {
+  std::vector<char> detached(triangles, 0);
+  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+    int kept = 0;
+    bool first_forward = false;
+    for (std::size_t k = i; k < j; ++k) {
+      if (detached[uses[k].triangle]) continue;
+      if (kept == 0) {
+        first_forward = uses[k].forward;
+        kept = 1;
+      } else if (kept == 1 && uses[k].forward != first_forward) {
+        kept = 2;
+      } else {
+        detached[uses[k].triangle] = 1;
+      }
+    }
+  });
+  return detached;
+}
+
+// OpenMesh cannot store a vertex whose closed fan of triangles is not all it has (two cones
+// touching at their tips). Each such closed fan gets its own copy of the vertex, at the same
+// position (appended to `positions`), so both surfaces stay closed. Fans with a boundary may
+// share a vertex: that is a pinched boundary, which OpenMesh stores. Returns the copies made.
+std::size_t split_closed_fans(std::vector<Triangle>& triangles, const std::vector<char>& detached,
+                              std::vector<Point>& positions) {
+  const std::vector<EdgeUse> uses = edge_uses(triangles);
+  // Wedges are (triangle, corner) pairs; wedges at one vertex joined across shared edges form
+  // that vertex's fans.
+  std::vector<int> parent(3 * triangles.size());
+  for (std::size_t w = 0; w < parent.size(); ++w) parent[w] = static_cast<int>(w);
+  auto find = [&parent](int w) {
+    while (parent[w] != w) w = parent[w] = parent[parent[w]];
+    return w;
+  };
+  auto wedge = [&triangles](int t, int vertex) {
+    const auto& c = triangles[t];
+    return 3 * t + (c[0] == vertex ? 0 : c[1] == vertex ? 1 : 2);
+  };
+  std::vector<char> open(parent.size(), 0);  // the wedge lies on a boundary edge
+  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+    int live[2], count = 0;
+    for (std::size_t k = i; k < j; ++k) {
+      if (!detached[uses[k].triangle] && count < 2) live[count++] = uses[k].triangle;
+    }
+    const int a = static_cast<int>(uses[i].edge >> 32);
+    const int b = static_cast<int>(uses[i].edge & 0xFFFFFFFFu);
+    if (count == 1) {
+      open[wedge(live[0], a)] = open[wedge(live[0], b)] = 1;
+    } else if (count == 2) {
+      for (const int v : {a, b}) {
+        parent[find(wedge(live[0], v))] = find(wedge(live[1], v));
+      }
+    }
+  });
+  // Fans per vertex: (vertex, fan root) pairs, and which fans are open.
+  std::vector<std::pair<int, int>> fans;
+  std::vector<char> fan_open(parent.size(), 0);
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    if (detached[t]) continue;
+    for (int c = 0; c < 3; ++c) {
+      const int root = find(3 * t + c);
+      fans.emplace_back(triangles[t][c], root);
+      if (open[3 * t + c]) fan_open[root] = 1;
+    }
+  }
+  std::sort(fans.begin(), fans.end());
+  fans.erase(std::unique(fans.begin(), fans.end()), fans.end());
+  std::unordered_map<int, int> copy_of_fan;  // fan root -> its own vertex
+  for (std::size_t i = 0; i < fans.size();) {
+    std::size_t j = i;
+    while (j < fans.size() && fans[j].first == fans[i].first) ++j;
+    if (j - i > 1) {
+      const bool any_open = std::any_of(fans.begin() + static_cast<std::ptrdiff_t>(i),
+                                        fans.begin() + static_cast<std::ptrdiff_t>(j),
+                                        [&](const auto& fan) { return fan_open[fan.second]; });
+      bool original_taken = any_open;
+      for (std::size_t k = i; k < j; ++k) {
+        if (fan_open[fans[k].second]) continue;
+        if (!original_taken) {
+          original_taken = true;
+          continue;
+        }
+        copy_of_fan[fans[k].second] = static_cast<int>(positions.size());
+        positions.push_back(positions[fans[k].first]);
+      }
+    }
+    i = j;
+  }
+  if (copy_of_fan.empty()) return 0;
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    if (detached[t]) continue;
+    for (int c = 0; c < 3; ++c) {
+      const auto found = copy_of_fan.find(find(3 * t + c));
+      if (found != copy_of_fan.end()) triangles[t][c] = found->second;
+    }
+  }
+  return copy_of_fan.size();
+}
+
+Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& triangles,
+              const std::vector<char>& detached, std::size_t original_vertices,
+              LoadReport& report) {
+  Mesh mesh;
+  mesh.reserve(positions.size(), triangles.size() * 3 / 2 + 3, triangles.size());
+  for (const auto& p : positions) mesh.add_vertex(p);
+  auto add = [&mesh](const Triangle& t) {
+    return mesh.add_face(VertexHandle(t[0]), VertexHandle(t[1]), VertexHandle(t[2])).is_valid();
+  };
+  std::vector<Triangle> refused;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    if (detached[t] || !add(triangles[t])) refused.push_back(triangles[t]);
+  }
+  // A face refused in one order can fit once the rest of its fans are in.
+  for (std::size_t before = 0; !refused.empty() && refused.size() != before;) {
+    before = refused.size();
+    std::vector<Triangle> still;
+    for (const auto& t : refused) {
+      if (!add(t)) still.push_back(t);
+    }
+    refused = std::move(still);
+  }
+  // What still does not fit (an edge with a third face, a face turned against its neighbours)
+  // is kept, on its own copies of its corners, so no data is lost.
+  for (const auto& t : refused) {
+    mesh.add_face(mesh.add_vertex(positions[t[0]]), mesh.add_vertex(positions[t[1]]),
+                  mesh.add_vertex(positions[t[2]]));
+    ++report.faces_detached;
+  }
+  for (std::size_t v = 0; v < original_vertices; ++v) {
+    if (mesh.is_isolated(VertexHandle(static_cast<int>(v)))) ++report.isolated_vertices;
+  }
+  return mesh;
+}
+
+std::size_t count_duplicate_positions(const std::vector<Point>& positions) {
+  std::unordered_set<PositionKey, PositionHash> seen;
+  seen.reserve(positions.size());
+  std::size_t duplicates = 0;
+  for (const auto& p : positions) {
+    if (!seen.insert(PositionKey(p)).second) ++duplicates;
+  }
+  return duplicates;
+}
+
+}  // namespace
+
+Mesh build_mesh(const Soup& soup, LoadReport& report) {
+  std::vector<Triangle> triangles;
+  triangles.reserve(soup.corners.size() / 3 + soup.face_count());
+  std::vector<int> corners;
+  for (std::size_t f = 0; f < soup.face_count(); ++f) {
+    corners.assign(soup.corners.begin() + static_cast<std::ptrdiff_t>(soup.face_begin(f)),
+                   soup.corners.begin() + static_cast<std::ptrdiff_t>(soup.face_end[f]));
+    triangulate_face(soup.positions, corners, triangles, report);
+  }
+  report.duplicate_faces_dropped = drop_duplicate_triangles(triangles);
+  report.faces_flipped = orient_consistently(triangles);
+  if (report.format != "stl") {
+    report.duplicate_positions = count_duplicate_positions(soup.positions);
+  }
+  const std::vector<char> detached = detach_non_manifold(edge_uses(triangles), triangles.size());
+  std::vector<Point> positions = soup.positions;
+  report.vertices_split = split_closed_fans(triangles, detached, positions);
+  return assemble(positions, triangles, detached, soup.positions.size(), report);
+}
+
+void add_warnings(LoadReport& report) {
+  auto warn = [&report](std::size_t count, const std::string& text) {
+    if (count) report.warnings.push_back(std::to_string(count) + " " + text);
+  };
+  warn(report.polygons_triangulated, "polygons with more than 3 corners were triangulated");
+  warn(report.degenerate_faces_dropped,
+       "degenerate faces (a vertex used twice, or fewer than 3 corners) were dropped");
+  warn(report.duplicate_faces_dropped,
+       "duplicate faces (the same corners as an earlier face) were dropped");
+  warn(report.faces_flipped,
+       "faces were flipped to agree with the orientation of their neighbours");
+  warn(report.faces_detached, "non-manifold faces were kept on their own copies of their vertices");
+  warn(report.vertices_split,
+       "vertices where closed surfaces touch were split, one copy per surface");
+  warn(report.duplicate_positions,
+       "vertices have exactly the position of another vertex (kept apart: the surface may be "
+       "cut open there)");
+  warn(report.isolated_vertices, "vertices are used by no face (kept)");
+  warn(report.elements_ignored, "line, point or curve elements were ignored (not surfaces)");
+}
+
+}  // namespace holefill::io

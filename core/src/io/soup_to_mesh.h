@@ -1,0 +1,19 @@
+// From the polygons a file describes to a Mesh: polygons are triangulated, faces flipped to agree
+// with their neighbours, exact duplicates and faces using a vertex twice dropped, faces that would
+// make an edge non-manifold kept on their own copies of their corners, and a vertex where closed
+// surfaces touch split into one copy per surface. Every repair is counted in the LoadReport.
+#pragma once
+
+#include "holefill/io.h"
+#include "soup.h"
+
+namespace holefill::io {
+
+// The mesh the soup describes after the repairs above (report.format must be set: STL's welded
+// positions are not counted as duplicates).
+Mesh build_mesh(const Soup& soup, LoadReport& report);
+
+// One sentence per kind of repair counted in `report`, appended to report.warnings.
+void add_warnings(LoadReport& report);
+
+}  // namespace holefill::io

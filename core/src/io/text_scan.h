@@ -1,0 +1,59 @@
+// Scanning the text of a mesh file: tokens, numbers (exact, locale-independent), lines, and the
+// messages that quote what was found. Shared by every reader.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace holefill::io {
+
+// Throws FileError(path, reason).
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& reason);
+
+// "line N: ", the prefix of a message about line N.
+std::string at_line(std::size_t line);
+
+// A short, printable excerpt of file text for a message (files may hold any bytes).
+std::string quoted(std::string_view text);
+
+inline bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+void skip_blanks(std::string_view& text);
+
+// The next blank-separated token of `text` (empty at its end), removed from `text`.
+std::string_view take_token(std::string_view& text);
+
+// The whole token is a number (from_chars: locale-independent and correctly rounded); overflow
+// reads as infinity, underflow as a tiny number.
+bool parse_double(std::string_view token, double& value);
+
+// The whole token is a whole number that fits a long long.
+bool parse_integer(std::string_view token, long long& value);
+
+// Lines of a text, without their end-of-line characters, counted from 1.
+class Lines {
+ public:
+  explicit Lines(std::string_view text) : text_(text) {}
+  bool next(std::string_view& line);
+  std::size_t number() const { return number_; }
+  // Bytes after the current line.
+  std::size_t remaining() const { return position_ >= text_.size() ? 0 : text_.size() - position_; }
+  std::size_t offset() const { return position_ < text_.size() ? position_ : text_.size(); }
+
+ private:
+  std::string_view text_;
+  std::size_t position_ = 0;
+  std::size_t number_ = 0;
+};
+
+// Text formats must not hold NUL bytes: a binary file with a text format's extension is refused,
+// naming `format`.
+void require_text(std::string_view text, const std::filesystem::path& path, const char* format);
+
+// `text` starts, after blank lines and blanks, with the whole word `word`.
+bool starts_with_word(std::string_view text, std::string_view word);
+
+}  // namespace holefill::io
