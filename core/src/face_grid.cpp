@@ -1,0 +1,113 @@
+#include "face_grid.h"
+
+#include <algorithm>
+
+namespace holefill::detail {
+namespace {
+
+// A face filed under more cells than this, or a lookup over more, goes through the list instead.
+constexpr double kMaxCellsPerFace = 64, kMaxCellsPerLookup = 1 << 20;
+// Cell indices are clamped to this range, so that they fit in 64 bits whatever the coordinates.
+constexpr double kMaxCellIndex = 1e15;
+
+std::uint64_t key_of(std::int64_t x, std::int64_t y, std::int64_t z) {
+  // 21 bits per axis; distant cells may share a key, which only adds candidates.
+  auto bits = [](std::int64_t i) { return static_cast<std::uint64_t>(i) & 0x1FFFFF; };
+  return bits(x) << 42 | bits(y) << 21 | bits(z);
+}
+
+}  // namespace
+
+double Box::magnitude() const {
+  double largest = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    largest = std::max({largest, std::abs(low[axis]), std::abs(high[axis])});
+  }
+  return low[0] <= high[0] ? largest : 0.0;
+}
+
+Box box_of(const Mesh& mesh, FaceHandle face) {
+  Box box;
+  for (const auto v : mesh.fv_range(face)) box.add(mesh.point(v));
+  return box;
+}
+
+FaceGrid::FaceGrid(std::vector<std::pair<int, Box>> boxes) : entries_(std::move(boxes)) {
+  // The mean extent, accumulated so that it cannot overflow; infinite extents are left out.
+  double mean_extent = 0.0;
+  std::size_t counted = 0;
+  for (const auto& [id, box] : entries_) {
+    const double extent = (box.high - box.low).max();
+    if (!std::isfinite(extent)) continue;
+    mean_extent += (extent - mean_extent) / static_cast<double>(++counted);
+  }
+  const double cell = 2.0 * mean_extent;
+  cell_ = std::isfinite(cell) && cell > 0.0 ? cell : 1.0;
+  for (std::size_t e = 0; e < entries_.size(); ++e) {
+    const auto range = cell_range(entries_[e].second);
+    if (!range || !(range->cells <= kMaxCellsPerFace)) {
+      unfiled_.push_back(e);
+      continue;
+    }
+    for (auto x = range->low[0]; x <= range->high[0]; ++x) {
+      for (auto y = range->low[1]; y <= range->high[1]; ++y) {
+        for (auto z = range->low[2]; z <= range->high[2]; ++z) {
+          cells_.emplace_back(key_of(x, y, z), e);
+        }
+      }
+    }
+  }
+  std::sort(cells_.begin(), cells_.end());
+}
+
+FaceGrid FaceGrid::of_mesh(const Mesh& mesh, const std::vector<bool>& skip) {
+  std::vector<std::pair<int, Box>> boxes;
+  boxes.reserve(mesh.n_faces());
+  for (const auto f : mesh.faces()) {
+    if (static_cast<std::size_t>(f.idx()) < skip.size() && skip[f.idx()]) continue;
+    boxes.emplace_back(f.idx(), box_of(mesh, f));
+  }
+  return FaceGrid(std::move(boxes));
+}
+
+std::optional<FaceGrid::CellRange> FaceGrid::cell_range(const Box& box) const {
+  CellRange range;
+  range.cells = 1.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double low = std::floor(box.low[axis] / cell_), high = std::floor(box.high[axis] / cell_);
+    if (std::isnan(low) || std::isnan(high)) return std::nullopt;
+    range.low[axis] = static_cast<std::int64_t>(std::clamp(low, -kMaxCellIndex, kMaxCellIndex));
+    range.high[axis] = static_cast<std::int64_t>(std::clamp(high, -kMaxCellIndex, kMaxCellIndex));
+    range.cells *= static_cast<double>(range.high[axis] - range.low[axis] + 1);
+  }
+  return range;
+}
+
+std::vector<int> FaceGrid::near(const Box& box) const {
+  std::vector<std::size_t> found;
+  const auto range = cell_range(box);
+  if (!range || !(range->cells <= kMaxCellsPerLookup)) {
+    for (std::size_t e = 0; e < entries_.size(); ++e) found.push_back(e);
+  } else {
+    for (auto x = range->low[0]; x <= range->high[0]; ++x) {
+      for (auto y = range->low[1]; y <= range->high[1]; ++y) {
+        for (auto z = range->low[2]; z <= range->high[2]; ++z) {
+          const std::uint64_t key = key_of(x, y, z);
+          auto at = std::lower_bound(cells_.begin(), cells_.end(),
+                                     std::pair<std::uint64_t, std::size_t>(key, 0));
+          for (; at != cells_.end() && at->first == key; ++at) found.push_back(at->second);
+        }
+      }
+    }
+    found.insert(found.end(), unfiled_.begin(), unfiled_.end());
+  }
+  std::vector<int> ids;
+  for (const std::size_t e : found) {
+    if (entries_[e].second.overlaps(box)) ids.push_back(entries_[e].first);
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+}  // namespace holefill::detail

@@ -1,0 +1,94 @@
+#include "patch_intersections.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "triangle_intersection.h"
+
+namespace holefill::detail {
+namespace {
+
+// A power of two that brings coordinates up to `magnitude` to at most 2, so that the products
+// of the intersection tests cannot overflow (and, exact, changes no answer).
+double scale_for(double magnitude) {
+  if (!(magnitude > 0.0) || !std::isfinite(magnitude)) return 1.0;
+  return std::ldexp(1.0, -std::clamp(std::ilogb(magnitude), -1000, 1000));
+}
+
+Box box_of_corners(const std::array<Point, 3>& corners) {
+  Box box;
+  for (const auto& p : corners) box.add(p);
+  return box;
+}
+
+bool marked(const std::vector<bool>& in_patch, FaceHandle f) {
+  return static_cast<std::size_t>(f.idx()) < in_patch.size() && in_patch[f.idx()];
+}
+
+}  // namespace
+
+std::vector<IntersectingPair> triangle_intersections(
+    const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
+    const std::vector<bool>& in_patch, const FaceGrid* around) {
+  if (triangles.empty()) return {};
+  // Candidates: the patch's triangles first, then the mesh's faces near them.
+  std::vector<std::array<Point, 3>> corners = triangles;
+  std::vector<FaceHandle> faces(triangles.size());
+  std::vector<std::pair<int, Box>> boxes;
+  Box reach;
+  for (const auto& t : triangles) {
+    boxes.emplace_back(static_cast<int>(boxes.size()), box_of_corners(t));
+    reach.add(boxes.back().second);
+  }
+  reach.grow(1e-9 * (reach.high - reach.low).max());
+  auto consider = [&](FaceHandle f) {
+    if (marked(in_patch, f) || mesh.valence(f) != 3) return;
+    const Box box = box_of(mesh, f);
+    if (!box.overlaps(reach)) return;
+    auto fv = mesh.cfv_iter(f);
+    corners.push_back({mesh.point(*fv), mesh.point(*++fv), mesh.point(*++fv)});
+    faces.push_back(f);
+    boxes.emplace_back(static_cast<int>(boxes.size()), box);
+  };
+  if (around) {
+    for (const int f : around->near(reach)) consider(FaceHandle(f));
+  } else {
+    for (const auto f : mesh.faces()) consider(f);
+  }
+  double magnitude = 0.0;
+  for (const auto& [id, box] : boxes) magnitude = std::max(magnitude, box.magnitude());
+  const double scale = scale_for(magnitude);
+  std::vector<std::optional<Triangle3>> scaled;
+  for (const auto& c : corners) scaled.push_back(triangle_from(c, scale));
+
+  const int patch_triangles = static_cast<int>(triangles.size());
+  std::vector<IntersectingPair> pairs;
+  const FaceGrid grid(boxes);
+  for (int i = 0; i < patch_triangles; ++i) {
+    if (!scaled[i]) continue;
+    for (const int o : grid.near(boxes[i].second)) {
+      if (o < patch_triangles && o <= i) continue;  // pairs within the patch: once, from the first
+      if (!scaled[o] || !triangles_intersect(*scaled[i], *scaled[o])) continue;
+      pairs.push_back(o < patch_triangles ? IntersectingPair{i, o, FaceHandle()}
+                                          : IntersectingPair{i, -1, faces[o]});
+    }
+  }
+  return pairs;
+}
+
+std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch& patch,
+                                                  const FaceGrid* around) {
+  std::vector<bool> in_patch(mesh.n_faces(), false);
+  std::vector<std::array<Point, 3>> triangles;
+  for (const auto f : patch.faces) {
+    in_patch[f.idx()] = true;
+    std::array<Point, 3> t;
+    int c = 0;
+    for (const auto v : mesh.fv_range(f)) t[c++ % 3] = mesh.point(v);
+    triangles.push_back(t);
+  }
+  return triangle_intersections(mesh, triangles, in_patch, around);
+}
+
+}  // namespace holefill::detail

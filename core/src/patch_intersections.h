@@ -1,0 +1,39 @@
+// Which triangles of a patch intersect the mesh around them or each other (the test is
+// triangle_intersection.h's), found through one face grid (face_grid.h). A patch is given either
+// as faces of the mesh or as corner positions of triangles not (yet) in it, so that a planned
+// triangulation can be checked before it is added.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "face_grid.h"
+#include "holefill/mesh.h"
+#include "holefill/patch.h"
+
+namespace holefill::detail {
+
+// One intersecting pair: patch triangle `triangle` and either a later patch triangle
+// (`other_triangle`) or a face of the mesh outside the patch (`other_face`, other_triangle -1).
+struct IntersectingPair {
+  int triangle = -1;
+  int other_triangle = -1;
+  FaceHandle other_face;
+};
+
+// The pairs of a patch triangle and another triangle (of the mesh outside the patch, or of the
+// patch: each such pair once) that intersect other than along what they share; degenerate
+// triangles are skipped. Faces of the mesh that `in_patch` marks (by face index; may be empty)
+// are not compared. `around` (when given) holds the mesh's faces outside the patch, by face
+// index, so that only faces near the patch are looked at; otherwise the mesh is scanned. Safe for
+// any finite coordinates: triangles are compared at a power-of-two scale that keeps products
+// finite.
+std::vector<IntersectingPair> triangle_intersections(
+    const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
+    const std::vector<bool>& in_patch, const FaceGrid* around);
+
+// triangle_intersections for a patch already in the mesh; `triangle` indexes patch.faces.
+std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch& patch,
+                                                  const FaceGrid* around);
+
+}  // namespace holefill::detail
