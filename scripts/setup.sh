@@ -11,6 +11,7 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev
   libglfw3-dev libglm-dev libimgui-dev libepoxy-dev libstb-dev
   xvfb xauth libgl1-mesa-dri
+  xdotool libx11-dev
 )
 
 missing=()

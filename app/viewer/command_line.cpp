@@ -43,6 +43,8 @@ const char* usage() {
          "  --compare-triangulation-only    compare the triangulation stage only\n"
          "  --compare-smoothing             show umbrella (left) vs fair (right) instead\n"
          "  --size WxH                      window size (default 1280x800)\n"
+         "  --save OUT                      after the above, save the mesh (.obj .off .ply .stl)\n"
+         "                                  and exit, with no window unless --screenshot\n"
          "  --screenshot OUT.png            render, save the window as PNG and exit\n"
          "  --frames N                      with --screenshot: render N frames (turning the\n"
          "                                  view a little each) and print the mean frame time\n"
@@ -97,6 +99,8 @@ CommandLine parse_command_line(const std::vector<std::string>& arguments) {
       command.frames = parse_int(value(), arg);
       command.report_frame_time = true;
       if (command.frames < 4) throw std::invalid_argument("--frames needs at least 4");
+    } else if (arg == "--save") {
+      command.save = value();
     } else if (arg == "--screenshot") {
       command.screenshot = value();
     } else if (!arg.empty() && arg[0] == '-') {

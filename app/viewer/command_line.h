@@ -24,6 +24,7 @@ struct CommandLine {
   bool compare_smoothing = false;  // umbrella | fair instead of liepa | maxmin
   int width = 1280;
   int height = 800;
+  std::filesystem::path save;        // set: after the actions, save the mesh here
   std::filesystem::path screenshot;  // set: render, save this PNG and exit
   int frames = 4;                    // frames scripted mode renders before the screenshot
   bool report_frame_time = false;    // print the mean frame time (set by --frames)

@@ -2,8 +2,10 @@
 // and neither side needs the other's library.
 #pragma once
 
+#include <algorithm>
 #include <glm/glm.hpp>
 #include <string>
+#include <vector>
 
 namespace holefill::viewer {
 
@@ -21,6 +23,18 @@ struct InputEvent {
   std::string path;  // a dropped file
 };
 
-enum Key : int { kKeyEscape = 256, kKeyDelete = 261 };
+enum Key : int { kKeyEscape = 256, kKeyEnter = 257, kKeyDelete = 261, kKeyF1 = 290, kKeyF12 = 301 };
+
+}  // namespace holefill::viewer
+
+namespace holefill::viewer {
+
+// The keys pressed during one frame, from the window's own events: Dear ImGui 1.86 (Debian 12)
+// only samples whether a key is down once per frame, so a tap shorter than a frame (synthetic
+// input, fast typists on a slow renderer) would be lost to the dialogs.
+struct FrameKeys {
+  std::vector<int> keys;
+  bool pressed(int key) const { return std::find(keys.begin(), keys.end(), key) != keys.end(); }
+};
 
 }  // namespace holefill::viewer

@@ -1,6 +1,7 @@
 #include "interaction.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "scene_arrays.h"
 
@@ -49,10 +50,34 @@ void frame_hole(Camera& camera, const Session& session, int hole_id) {
   camera.frame(center, hole_view_direction(session.mesh(), hole), 2.0f * radius);
 }
 
-bool Interaction::take_mesh_opened() {
-  const bool opened = opened_;
-  opened_ = false;
-  return opened;
+std::vector<Request> Interaction::take_requests() { return std::exchange(requests_, {}); }
+
+void Interaction::run(Command command, Camera& camera, Session& session) {
+  switch (command) {
+    case Command::Undo:
+      session.undo();
+      break;
+    case Command::Redo:
+      session.redo();
+      break;
+    case Command::Deselect:
+      session.select(-1);
+      break;
+    case Command::ResetHole:
+      session.reset_selected();
+      break;
+    case Command::Frame:
+      if (session.selected() >= 0)
+        frame_hole(camera, session, session.selected());
+      else
+        fit_mesh(camera, session);
+      break;
+    case Command::ResetView:
+      camera.reset();
+      break;
+    default:
+      requests_.push_back({command, {}});
+  }
 }
 
 void Interaction::handle(const InputEvent& event, const SceneArea& scene, bool ui_wants_mouse,
@@ -100,25 +125,13 @@ void Interaction::handle(const InputEvent& event, const SceneArea& scene, bool u
       if (!ui_wants_mouse && scene.contains(event.cursor)) camera.zoom(event.scroll, local);
       break;
     case InputEvent::Kind::Key:
-      if (ui_wants_keyboard) return;
-      if (event.control && event.key == 'Z') {
-        if (event.shift)
-          session.redo();
-        else
-          session.undo();
-      } else if (event.control && event.key == 'Y') {
-        session.redo();
-      } else if (event.key == 'F') {
-        if (session.selected() >= 0)
-          frame_hole(camera, session, session.selected());
-        else
-          fit_mesh(camera, session);
-      } else if (event.key == 'R') {
-        camera.reset();
+      // A screenshot is taken whatever has the keyboard, so dialogs can be shown too.
+      if (const auto command = command_for_key(event.key, event.control, event.shift)) {
+        if (!ui_wants_keyboard || *command == Command::Screenshot) run(*command, camera, session);
       }
       break;
     case InputEvent::Kind::Drop:
-      if (session.open(event.path)) opened_ = true;
+      requests_.push_back({std::nullopt, event.path});
       break;
   }
 }

@@ -1,9 +1,12 @@
 // What mouse and keys do in the 3D view: left drag orbits (arcball), right or middle drag (or
-// shift + left) pans, the wheel zooms toward the cursor, a left click picks a hole, F frames
-// the selected hole (or the mesh), R resets the view, Ctrl+Z / Ctrl+Y undo and redo, a dropped
-// file is opened. No GL: it moves the camera and calls the session.
+// shift + left) pans, the wheel zooms toward the cursor, a left click picks a hole. Keys follow
+// the shortcut table (shortcuts.h): those about the view and the session (undo, redo, deselect,
+// reset hole, frame, reset view) are carried out here; those about files, help and screenshots,
+// and dropped files, are handed to the frame loop as requests. No GL: it moves the camera and
+// calls the session.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <vector>
 
@@ -11,6 +14,7 @@
 #include "events.h"
 #include "picking.h"
 #include "session.h"
+#include "shortcuts.h"
 
 namespace holefill::viewer {
 
@@ -35,14 +39,21 @@ void fit_mesh(Camera& camera, const Session& session);
 // Centres the camera on a hole, looking at it from outside the surface.
 void frame_hole(Camera& camera, const Session& session, int hole_id);
 
+// Something for the frame loop to do: a command of the shortcut table, or opening a dropped file
+// (command nothing, path set).
+struct Request {
+  std::optional<Command> command;
+  std::filesystem::path path;
+};
+
 class Interaction {
  public:
   // `ui_wants_mouse` / `ui_wants_keyboard`: the UI took the input (ImGui's WantCapture...).
   void handle(const InputEvent& event, const SceneArea& area, bool ui_wants_mouse,
               bool ui_wants_keyboard, Camera& camera, Session& session);
   int hovered() const { return hovered_; }
-  // True once after a dropped file was opened (the frame loop then fits the view to it).
-  bool take_mesh_opened();
+  // The requests since the last call, in order.
+  std::vector<Request> take_requests();
 
  private:
   enum class Drag { None, Pending, Orbit, Pan };
@@ -50,7 +61,9 @@ class Interaction {
   glm::vec2 press_{0.0f};
   glm::vec2 last_{0.0f};
   int hovered_ = -1;
-  bool opened_ = false;
+  std::vector<Request> requests_;
+
+  void run(Command command, Camera& camera, Session& session);
 };
 
 }  // namespace holefill::viewer

@@ -15,6 +15,9 @@
 
 #include "camera.h"
 #include "command_line.h"
+#include "dialogs.h"
+#include "file_actions.h"
+#include "file_dialog.h"
 #include "interaction.h"
 #include "panels.h"
 #include "renderer.h"
@@ -72,6 +75,64 @@ bool run_script(const hv::CommandLine& command, hv::Session& session) {
   return true;
 }
 
+// Shows the file dialog the file actions ask for: the desktop's own (zenity, kdialog) on a
+// thread of its own while the window keeps drawing, or, when there is none or it cannot run,
+// the in-app one.
+class FileDialogs {
+ public:
+  FileDialogs() : native_program_(hv::find_native_dialog_program()) {}
+  bool builtin() const { return native_program_.empty(); }
+  void update(hv::FileActions& files) {
+    if (builtin()) return;
+    if (files.dialog() && !native_.running()) {
+      kind_ = files.dialog()->kind;
+      native_.start(hv::native_dialog_command(*files.dialog(), native_program_));
+    }
+    const auto answer = native_.poll();
+    if (!answer) return;
+    if (!answer->ran) {
+      std::fprintf(stderr, "holefill-viewer: %s did not run; using the in-app file dialog\n",
+                   native_program_.c_str());
+      native_program_.clear();
+      return;
+    }
+    // zenity and kdialog ask before replacing a file themselves.
+    files.dialog_closed(answer->chosen, kind_ == hv::FileDialogRequest::Kind::Save);
+  }
+
+ private:
+  std::string native_program_;
+  hv::NativeDialog native_;
+  hv::FileDialogRequest::Kind kind_ = hv::FileDialogRequest::Kind::Open;
+};
+
+// Carries out what the interaction handed over: file commands, help, screenshots, drops.
+void carry_out(const hv::Request& request, hv::FileActions& files, hv::UiState& ui) {
+  if (!request.command) {
+    files.open_file(request.path);
+    return;
+  }
+  switch (*request.command) {
+    case hv::Command::Open:
+      files.open();
+      break;
+    case hv::Command::Save:
+      files.save();
+      break;
+    case hv::Command::SaveAs:
+      files.save_as();
+      break;
+    case hv::Command::Help:
+      ui.show_help = true;
+      break;
+    case hv::Command::Screenshot:
+      ui.take_screenshot = true;
+      break;
+    default:
+      break;
+  }
+}
+
 hv::SceneArea scene_area(const hv::Window& window) {
   const glm::vec2 size = window.size();
   return {{hv::kPanelWidth, 0.0f}, {std::max(size.x - hv::kPanelWidth, 1.0f), size.y}};
@@ -92,15 +153,22 @@ void save_screenshot(const hv::Renderer& renderer, const hv::Window& window,
 
 int run(const hv::CommandLine& command, const char* executable) {
   hv::Session session;
+  hv::FileActions files(session);
   const auto mesh_path = command.mesh.empty() ? hv::default_mesh_path(executable) : command.mesh;
   const bool scripted = !command.screenshot.empty();
-  if (!session.open(mesh_path) && scripted) {
+  if (!files.open_now(mesh_path)) {
     std::fprintf(stderr, "holefill-viewer: %s\n", session.notice().text.c_str());
     return 3;
   }
-  if (scripted && !run_script(command, session)) return 2;
+  if (!run_script(command, session)) return 2;
+  if (!command.save.empty() && !session.save(command.save)) {
+    std::fprintf(stderr, "holefill-viewer: %s\n", session.notice().text.c_str());
+    return 4;
+  }
+  if (!command.save.empty()) std::printf("%s\n", session.notice().text.c_str());
+  if (!command.save.empty() && !scripted) return 0;
 
-  hv::Window window(command.width, command.height, "holefill viewer");
+  hv::Window window(command.width, command.height, files.window_title().c_str());
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename =
@@ -113,30 +181,53 @@ int run(const hv::CommandLine& command, const char* executable) {
   hv::Camera camera;
   hv::Interaction interaction;
   hv::UiState ui;
-  ui.mesh_path = mesh_path.string();
+  FileDialogs dialogs;
+  hv::BuiltinDialog builtin_dialog;
   camera.set_viewport(scene_area(window).size);
+  files.take_mesh_opened();
   mesh_opened(camera, session, ui);
   if (session.selected() >= 0) hv::frame_hole(camera, session, session.selected());
 
   int status = 0;
+  std::string title = files.window_title();
   std::chrono::steady_clock::time_point timer_start;
-  for (int frame = 0; !window.should_close(); ++frame) {
+  for (int frame = 0;; ++frame) {
+    // The window manager's close button asks; unsaved fills keep the window open behind the
+    // Save changes question. A scripted run closes itself.
+    if (window.should_close()) {
+      if (scripted) break;
+      window.cancel_close();
+      files.quit();
+    }
+    if (files.quitting()) break;
     const hv::SceneArea area = scene_area(window);
     camera.set_viewport(area.size);
+    hv::FrameKeys keys;
     for (const auto& event : window.poll()) {
-      interaction.handle(event, area, ImGui::GetIO().WantCaptureMouse,
-                         ImGui::GetIO().WantCaptureKeyboard, camera, session);
+      if (event.kind == hv::InputEvent::Kind::Key) keys.keys.push_back(event.key);
+      interaction.handle(event, area, ImGui::GetIO().WantCaptureMouse || files.busy(),
+                         ImGui::GetIO().WantCaptureKeyboard || files.busy(), camera, session);
     }
+    for (const auto& request : interaction.take_requests()) carry_out(request, files, ui);
+    dialogs.update(files);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    hv::draw_panels(session, ui, static_cast<float>(window.size().y));
+    ImGui::BeginDisabled(files.busy() && !dialogs.builtin());
+    hv::draw_panels(session, files, ui, static_cast<float>(window.size().y));
+    ImGui::EndDisabled();
+    hv::draw_file_modals(files, builtin_dialog, dialogs.builtin(), keys);
+    hv::draw_help(ui.show_help, keys);
     ImGui::Render();
-    if (ui.mesh_opened || interaction.take_mesh_opened()) mesh_opened(camera, session, ui);
+    if (files.take_mesh_opened()) mesh_opened(camera, session, ui);
+    if (files.window_title() != title) {
+      title = files.window_title();
+      window.set_title(title.c_str());
+    }
     if (ui.fit_view) hv::fit_mesh(camera, session);
     if (ui.reset_view) camera.reset();
     if (ui.frame_selected) hv::frame_hole(camera, session, session.selected());
-    ui.mesh_opened = ui.fit_view = ui.reset_view = ui.frame_selected = false;
+    ui.fit_view = ui.reset_view = ui.frame_selected = false;
 
     const glm::ivec2 framebuffer = window.framebuffer_size();
     renderer.render(session, camera, to_framebuffer(area, window), framebuffer.x, framebuffer.y,
@@ -147,9 +238,12 @@ int run(const hv::CommandLine& command, const char* executable) {
       ui.take_screenshot = false;
       try {
         save_screenshot(renderer, window, ui.screenshot_path);
-        std::printf("saved %s\n", ui.screenshot_path.c_str());
+        const auto where = std::filesystem::absolute(ui.screenshot_path).string();
+        std::printf("saved %s\n", where.c_str());
+        session.tell({"Screenshot saved to " + where, false});
       } catch (const std::exception& error) {
         std::fprintf(stderr, "holefill-viewer: %s\n", error.what());
+        session.tell({std::string("Could not save the screenshot: ") + error.what(), true});
       }
     }
     if (command.report_frame_time && frame == 1) timer_start = std::chrono::steady_clock::now();

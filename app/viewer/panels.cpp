@@ -56,14 +56,25 @@ void patch_statistics(const HoleFill& fill) {
   if (!fill.smoothing_note.empty()) ImGui::TextWrapped("%s", fill.smoothing_note.c_str());
 }
 
-void file_section(Session& session, UiState& ui) {
-  ImGui::SetNextItemWidth(-1.0f);
-  ImGui::InputTextWithHint("##path", "mesh path (.obj .off .ply .stl)", &ui.mesh_path);
-  if (ImGui::Button("Open")) ui.mesh_opened = session.open(ui.mesh_path);
+void tooltip(const char* text) {
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
+}
+
+void file_section(Session& session, FileActions& files, UiState& ui) {
+  if (ImGui::Button("Open...")) files.open();
+  tooltip("Open a mesh (Ctrl+O); or drop a file on the window");
   ImGui::SameLine();
-  if (ImGui::Button("Save")) session.save(ui.mesh_path);
+  if (ImGui::Button("Save")) files.save();
+  const std::string save_tip =
+      files.save_target()
+          ? "Save to " + files.save_target()->string() + " (Ctrl+S)"
+          : std::string("Save the filled mesh: asks where, the first time (Ctrl+S)");
+  tooltip(save_tip.c_str());
   ImGui::SameLine();
-  ImGui::TextDisabled("or drop a file on the window");
+  if (ImGui::Button("Save As...")) files.save_as();
+  tooltip("Save the filled mesh as OBJ, OFF, PLY or STL (Ctrl+Shift+S)");
+  ImGui::SameLine();
+  if (ImGui::Button("Keys (F1)")) ui.show_help = true;
   const Notice& notice = session.notice();
   if (!notice.text.empty()) {
     if (notice.error) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
@@ -306,12 +317,12 @@ void display_section(UiState& ui) {
 
 }  // namespace
 
-void draw_panels(Session& session, UiState& ui, float window_height) {
+void draw_panels(Session& session, FileActions& files, UiState& ui, float window_height) {
   ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, window_height));
   ImGui::Begin("holefill", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  file_section(session, ui);
+  file_section(session, files, ui);
   ImGui::Separator();
   hole_list(session, ui);
   ImGui::Separator();

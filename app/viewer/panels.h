@@ -1,28 +1,29 @@
-// The ImGui side panel: file open/save, the hole list, fill options, the stage buttons,
-// undo/redo, patch statistics with valence histograms, the comparison, display toggles and the
-// screenshot button. It calls the session for every action and leaves requests that need the
-// camera or the framebuffer (frame, fit, screenshot) in UiState for the frame loop.
+// The ImGui side panel: Open, Save, Save As and the message of the last action, the hole list, fill
+// options, the stage buttons, undo/redo, patch statistics with valence histograms, the comparison,
+// display toggles and the screenshot button. It calls the session for every action and leaves
+// requests that need the camera or the framebuffer (frame, fit, screenshot) in UiState for the
+// frame loop.
 #pragma once
 
 #include <string>
 
 #include "display.h"
+#include "file_actions.h"
 #include "session.h"
 
 namespace holefill::viewer {
 
 struct UiState {
   DisplayOptions display;
-  std::string mesh_path;
   std::string screenshot_path = "holefill-screenshot.png";
   // Requests the frame loop carries out and clears.
   bool frame_selected = false;
   bool fit_view = false;
   bool reset_view = false;
   bool take_screenshot = false;
-  bool mesh_opened = false;
+  bool show_help = false;
 };
 
-void draw_panels(Session& session, UiState& ui, float window_height);
+void draw_panels(Session& session, FileActions& files, UiState& ui, float window_height);
 
 }  // namespace holefill::viewer

@@ -31,12 +31,14 @@ void Session::load(Mesh mesh, std::string name) {
   undo_.clear();
   redo_.clear();
   selected_ = -1;
+  revision_ = saved_revision_ = last_revision_ = 0;
   replay();
 }
 
 bool Session::save(const std::filesystem::path& path) {
   try {
     save_mesh(mesh_, path);
+    saved_revision_ = revision_;
     notice_ = {"Saved " + path.string(), false};
     return true;
   } catch (const std::exception& error) {
@@ -69,6 +71,7 @@ void Session::set_options(const FillOptions& options) {
   for (auto& step : log_) {
     if (step.hole_id == selected_) step.options = options_;
   }
+  revised();
   replay();
 }
 
@@ -115,13 +118,14 @@ bool Session::reset_selected() {
   if (selected_ < 0 || !has_steps(selected_)) return false;
   remember();
   std::erase_if(log_, [this](const FillStep& step) { return step.hole_id == selected_; });
+  revised();
   replay();
   return true;
 }
 
 bool Session::undo() {
   if (undo_.empty()) return false;
-  redo_.push_back({log_, selected_});
+  redo_.push_back({log_, selected_, revision_});
   Snapshot snapshot = std::move(undo_.back());
   undo_.pop_back();
   restore(std::move(snapshot));
@@ -130,7 +134,7 @@ bool Session::undo() {
 
 bool Session::redo() {
   if (redo_.empty()) return false;
-  undo_.push_back({log_, selected_});
+  undo_.push_back({log_, selected_, revision_});
   Snapshot snapshot = std::move(redo_.back());
   redo_.pop_back();
   restore(std::move(snapshot));
@@ -181,7 +185,7 @@ const Comparison* Session::comparison() {
 }
 
 void Session::remember() {
-  undo_.push_back({log_, selected_});
+  undo_.push_back({log_, selected_, revision_});
   if (undo_.size() > kHistoryLimit) undo_.erase(undo_.begin());
   redo_.clear();
   last_change_was_options_ = false;
@@ -190,6 +194,7 @@ void Session::remember() {
 void Session::restore(Snapshot snapshot) {
   log_ = std::move(snapshot.log);
   selected_ = snapshot.selected;
+  revision_ = snapshot.revision;
   last_change_was_options_ = false;
   for (auto it = log_.rbegin(); it != log_.rend(); ++it) {
     if (it->hole_id == selected_) {
@@ -210,8 +215,10 @@ void Session::replay() {
 
 bool Session::run_step(int hole_id) {
   const bool ran = advance(mesh_, holes_[hole_id], fills_[hole_id], options_);
-  // A failed stage is logged too, so that replay shows the same failure in the hole list.
+  // A failed stage is logged too, so that replay shows the same failure in the hole list;
+  // only a stage that ran changed the mesh (a failed one leaves it as it was).
   if (ran || fills_[hole_id].failed()) log_.push_back({hole_id, options_});
+  if (ran) revised();
   if (fills_[hole_id].failed()) {
     notice_ = {"Hole " + std::to_string(hole_id) + ": " + fills_[hole_id].failure, true};
   }
@@ -223,6 +230,8 @@ bool Session::has_steps(int hole_id) const {
   return std::any_of(log_.begin(), log_.end(),
                      [hole_id](const FillStep& step) { return step.hole_id == hole_id; });
 }
+
+void Session::revised() { revision_ = ++last_revision_; }
 
 void Session::changed() {
   ++mesh_version_;

@@ -14,6 +14,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "comparison.h"
@@ -37,8 +38,12 @@ class Session {
   bool open(const std::filesystem::path& path);
   // Starts over on `mesh` (named `name` in the UI).
   void load(Mesh mesh, std::string name);
-  // Writes the current mesh (OBJ, OFF or PLY by extension); notice() reports either way.
+  // Writes the current mesh (format by extension: save_mesh); notice() reports either way.
+  // A successful save makes the current state the saved one (modified() turns false).
   bool save(const std::filesystem::path& path);
+  // True when the mesh differs from the one last opened or saved: a fill, reset or option
+  // change since then that undo has not taken back.
+  bool modified() const { return revision_ != saved_revision_; }
 
   const std::string& name() const { return name_; }
   const Mesh& mesh() const { return mesh_; }
@@ -48,6 +53,8 @@ class Session {
   std::uint64_t mesh_version() const { return mesh_version_; }
   const Notice& notice() const { return notice_; }
   void clear_notice() { notice_ = {}; }
+  // Shows a message of the application's own (e.g. where a screenshot went).
+  void tell(Notice notice) { notice_ = std::move(notice); }
 
   // The selected hole, -1 for none.
   int selected() const { return selected_; }
@@ -99,6 +106,7 @@ class Session {
   struct Snapshot {
     std::vector<FillStep> log;
     int selected = -1;
+    std::uint64_t revision = 0;
   };
 
   void remember();
@@ -107,6 +115,7 @@ class Session {
   bool run_step(int hole_id);
   bool has_steps(int hole_id) const;
   void changed();
+  void revised();
 
   std::string name_;
   Mesh loaded_;
@@ -116,6 +125,11 @@ class Session {
   std::vector<FillStep> log_;
   std::vector<Snapshot> undo_;
   std::vector<Snapshot> redo_;
+  // Which state of the log the mesh shows: a new number for every edit, the snapshot's on undo
+  // and redo, so that undoing back to the saved state reads as unmodified.
+  std::uint64_t revision_ = 0;
+  std::uint64_t saved_revision_ = 0;
+  std::uint64_t last_revision_ = 0;
   bool last_change_was_options_ = false;
   int selected_ = -1;
   FillOptions options_;

@@ -53,8 +53,14 @@ struct WindowCallbacks {
       e.key = 'A' + (key - GLFW_KEY_A);
     else if (key == GLFW_KEY_ESCAPE)
       e.key = kKeyEscape;
+    else if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)
+      e.key = kKeyEnter;
     else if (key == GLFW_KEY_DELETE)
       e.key = kKeyDelete;
+    else if (key == GLFW_KEY_F1)
+      e.key = kKeyF1;
+    else if (key == GLFW_KEY_F12)
+      e.key = kKeyF12;
     else
       return;
     window.events_.push_back(e);
@@ -97,6 +103,8 @@ Window::~Window() {
 
 bool Window::should_close() const { return glfwWindowShouldClose(window_); }
 void Window::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+void Window::cancel_close() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
+void Window::set_title(const char* title) { glfwSetWindowTitle(window_, title); }
 
 std::vector<InputEvent> Window::poll() {
   glfwPollEvents();

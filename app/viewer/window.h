@@ -22,6 +22,9 @@ class Window {
   GLFWwindow* handle() const { return window_; }
   bool should_close() const;
   void request_close();
+  // Takes back a close request (the user still has something to answer).
+  void cancel_close();
+  void set_title(const char* title);
   // Processes pending input and returns what happened since the last call.
   std::vector<InputEvent> poll();
   void swap();

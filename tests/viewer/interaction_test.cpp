@@ -89,6 +89,65 @@ TEST(Interaction, ControlZUndoesAndControlYRedoes) {
   EXPECT_EQ(scene.session.fill(2).stage(), Stage::Triangulated);
 }
 
+InputEvent key_event(int key, bool control = false, bool shift = false) {
+  InputEvent event;
+  event.kind = InputEvent::Kind::Key;
+  event.key = key;
+  event.control = control;
+  event.shift = shift;
+  return event;
+}
+
+TEST(Interaction, DeleteResetsTheSelectedHoleAndEscapeDeselects) {
+  Scene scene;
+  scene.session.select(2);
+  ASSERT_TRUE(scene.session.step(Stage::Triangulated));
+  scene.send(key_event(kKeyDelete));
+  EXPECT_EQ(scene.session.fill(2).stage(), Stage::Original);
+  scene.send(key_event(kKeyEscape));
+  EXPECT_EQ(scene.session.selected(), -1);
+}
+
+TEST(Interaction, FileKeysAndDroppedFilesBecomeRequestsForTheFrameLoop) {
+  Scene scene;
+  scene.send(key_event('S', true));
+  scene.send(key_event('S', true, true));
+  scene.send(key_event('O', true));
+  InputEvent drop;
+  drop.kind = InputEvent::Kind::Drop;
+  drop.path = "/tmp/dropped.obj";
+  scene.send(drop);
+  const auto requests = scene.interaction.take_requests();
+  ASSERT_EQ(requests.size(), 4u);
+  EXPECT_EQ(requests[0].command, Command::Save);
+  EXPECT_EQ(requests[1].command, Command::SaveAs);
+  EXPECT_EQ(requests[2].command, Command::Open);
+  EXPECT_FALSE(requests[3].command);
+  EXPECT_EQ(requests[3].path, std::filesystem::path("/tmp/dropped.obj"));
+  EXPECT_EQ(scene.session.name(), "bunny.obj");  // nothing opened behind the user's back
+  EXPECT_TRUE(scene.interaction.take_requests().empty());
+}
+
+TEST(Interaction, KeysGoToTheUiWhenItWantsThem) {
+  Scene scene;
+  scene.session.select(2);
+  scene.interaction.handle(key_event(kKeyEscape), kArea, false, true, scene.camera, scene.session);
+  EXPECT_EQ(scene.session.selected(), 2);
+}
+
+TEST(Shortcuts, EveryKeyCombinationMeansOneCommand) {
+  const auto table = shortcuts();
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    for (std::size_t j = i + 1; j < table.size(); ++j) {
+      EXPECT_FALSE(table[i].key == table[j].key && table[i].control == table[j].control &&
+                   table[i].shift == table[j].shift)
+          << table[i].keys << " and " << table[j].keys;
+    }
+    EXPECT_EQ(command_for_key(table[i].key, table[i].control, table[i].shift), table[i].command);
+  }
+  EXPECT_FALSE(command_for_key('S', false, false));  // a plain S is not Save
+}
+
 TEST(Interaction, TheComparisonViewPicksInTheListOnly) {
   Scene scene;
   const glm::vec2 hole = scene.on_screen(2);

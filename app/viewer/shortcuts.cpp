@@ -1,0 +1,38 @@
+#include "shortcuts.h"
+
+#include <algorithm>
+#include <iterator>
+
+#include "events.h"
+
+namespace holefill::viewer {
+namespace {
+
+constexpr Shortcut kShortcuts[] = {
+    {Command::Open, 'O', true, false, "Ctrl+O", "open a mesh"},
+    {Command::Save, 'S', true, false, "Ctrl+S", "save (the first time: where to)"},
+    {Command::SaveAs, 'S', true, true, "Ctrl+Shift+S", "save as"},
+    {Command::Undo, 'Z', true, false, "Ctrl+Z", "undo"},
+    {Command::Redo, 'Y', true, false, "Ctrl+Y", "redo"},
+    {Command::Redo, 'Z', true, true, "Ctrl+Shift+Z", "redo"},
+    {Command::Deselect, kKeyEscape, false, false, "Esc", "deselect the hole, close a dialog"},
+    {Command::ResetHole, kKeyDelete, false, false, "Delete", "take the selected hole's patch out"},
+    {Command::Frame, 'F', false, false, "F", "frame the selected hole (or the mesh)"},
+    {Command::ResetView, 'R', false, false, "R", "reset the view"},
+    {Command::Help, kKeyF1, false, false, "F1", "this help"},
+    {Command::Screenshot, kKeyF12, false, false, "F12", "save a screenshot"},
+};
+
+}  // namespace
+
+std::span<const Shortcut> shortcuts() { return kShortcuts; }
+
+std::optional<Command> command_for_key(int key, bool control, bool shift) {
+  const auto found = std::find_if(std::begin(kShortcuts), std::end(kShortcuts), [&](const auto& s) {
+    return s.key == key && s.control == control && s.shift == shift;
+  });
+  if (found == std::end(kShortcuts)) return std::nullopt;
+  return found->command;
+}
+
+}  // namespace holefill::viewer

@@ -1,0 +1,113 @@
+#!/bin/bash
+# Drives the real holefill-viewer window with synthetic input (xdotool, and WM_DELETE_WINDOW
+# close requests as a window manager sends them) under the X server xvfb-run started.
+#   interactive.sh SCENARIO VIEWER CLOSE_REQUEST ASSETS WORKDIR
+# Scenarios: close-unsaved, close-saved, save-as, save-native, garbage-mesh, scripted-save. Exits non-zero with a message on
+# the first expectation that does not hold.
+set -u
+scenario=$1 viewer=$2 close_request=$3 assets=$4 work=$5
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+export LIBGL_ALWAYS_SOFTWARE=1
+
+fail() { echo "FAILED: $*" >&2; [ -n "${pid:-}" ] && kill "$pid" 2>/dev/null; exit 1; }
+
+# Starts the viewer with the given arguments and waits for its window.
+start() {
+  "$viewer" "$@" >"$work/viewer.log" 2>&1 &
+  pid=$!
+  window=$(timeout 60 xdotool search --sync --onlyvisible --name 'holefill viewer' | head -1)
+  [ -n "$window" ] || fail "no viewer window appeared: $(cat "$work/viewer.log")"
+  xdotool windowfocus --sync "$window"
+  sleep 1  # the first frames lay the panel out
+}
+keys() { xdotool key --delay 100 "$@"; sleep 0.7; }
+alive() { kill -0 "$pid" 2>/dev/null; }
+# Waits up to $1 seconds for the viewer to exit and checks its status is $2.
+exits_within() {
+  for _ in $(seq $(($1 * 10))); do alive || break; sleep 0.1; done
+  alive && fail "the viewer is still running after $1 s"
+  wait "$pid"
+  local status=$?
+  [ "$status" = "$2" ] || fail "the viewer exited with $status, expected $2"
+}
+# Saves a screenshot (F12) as $1.png in the work folder, for people to look at.
+screenshot() { keys F12; mv holefill-screenshot.png "$1.png" || fail "F12 saved no screenshot"; }
+title() { xdotool getwindowname "$window"; }
+faces() { grep -c '^f ' "$1"; }
+
+cp "$assets/bunny.obj" "$work/bunny.obj"
+case $scenario in
+close-saved)
+  start bunny.obj
+  "$close_request" "$window"
+  exits_within 5 0
+  ;;
+close-unsaved)
+  start bunny.obj --select-hole 0 --run triangulate
+  [ "$(title)" = "*bunny.obj - holefill viewer" ] || fail "title '$(title)' has no modified mark"
+  "$close_request" "$window"
+  sleep 1.5
+  alive || fail "a close request with unsaved fills quit the viewer"
+  screenshot save-changes-question
+  keys Escape  # Cancel
+  "$close_request" "$window"
+  sleep 1.5
+  alive || fail "the viewer quit after Cancel and a second request"
+  keys d  # Discard
+  exits_within 5 0
+  ;;
+save-as)
+  export HOLEFILL_FILE_DIALOG=builtin
+  start bunny.obj --select-hole 0 --run triangulate,refine,smooth
+  keys ctrl+shift+s
+  screenshot save-as-dialog
+  keys Return  # the suggested name, bunny-filled.obj beside the mesh
+  [ -f bunny-filled.obj ] || fail "Save As did not write bunny-filled.obj: $(cat viewer.log)"
+  [ "$(faces bunny-filled.obj)" -gt "$(faces bunny.obj)" ] || fail "the saved mesh is not filled"
+  [ "$(title)" = "bunny-filled.obj - holefill viewer" ] || fail "title after saving: '$(title)'"
+  cp bunny-filled.obj first-save.obj
+  # Save As onto the existing file asks; Cancel returns to the dialog, Esc leaves it.
+  keys ctrl+shift+s Return
+  screenshot overwrite-question
+  keys Escape Escape
+  cmp -s bunny-filled.obj first-save.obj || fail "a cancelled overwrite changed the file"
+  alive || fail "the viewer quit"
+  "$close_request" "$window"  # saved: quits at once
+  exits_within 5 0
+  ;;
+save-native)
+  # A stand-in for zenity that records how it was called and answers with a file name.
+  mkdir bin
+  printf '#!/bin/sh\necho "$@" > "%s/zenity-args"\necho "%s/picked.ply"\n' "$work" "$work" \
+    > bin/zenity
+  chmod +x bin/zenity
+  PATH="$work/bin:$PATH" start bunny.obj --select-hole 1 --run triangulate
+  keys ctrl+s
+  [ -f picked.ply ] || fail "Save through the native dialog wrote nothing: $(cat viewer.log)"
+  grep -q -- "--confirm-overwrite" zenity-args || fail "zenity was not asked to confirm overwrite"
+  grep -q -- "--filename=$work/bunny-filled.obj" zenity-args ||
+    fail "zenity did not propose bunny-filled.obj: $(cat zenity-args)"
+  "$close_request" "$window"
+  exits_within 5 0
+  ;;
+garbage-mesh)
+  # The same message as the in-app Open, and no window.
+  printf 'v 0 0 0\nv 1 0\nf 1 2 3\n' > garbage.obj
+  timeout 30 "$viewer" garbage.obj >out.log 2>err.log
+  status=$?
+  [ "$status" = 3 ] || fail "a garbage mesh gave exit status $status, expected 3"
+  grep -q "holefill-viewer: Could not open .*garbage.obj" err.log ||
+    fail "no clear message on stderr: $(cat err.log)"
+  ;;
+scripted-save)
+  timeout 60 "$viewer" bunny.obj --select-hole 0 --run triangulate,refine,smooth \
+    --save out.off >out.log 2>err.log || fail "--save failed: $(cat err.log)"
+  [ "$(sed -n 2p out.off | cut -d' ' -f2)" -gt 3000 ] || fail "out.off is not the filled bunny"
+  timeout 60 "$viewer" bunny.obj --save /no/such/folder/out.obj 2>err.log
+  [ $? = 4 ] || fail "an unwritable --save did not exit with 4"
+  ;;
+*)
+  fail "unknown scenario $scenario"
+  ;;
+esac
+echo "passed: $scenario"
