@@ -1,59 +1,16 @@
 // The holefill command on the bundled assets: exit codes, the table, the JSON report, and that
 // a failure never leaves a partial output file.
-#include "cli.h"
-
-#include <gtest/gtest.h>
-#include <unistd.h>
-
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
+#include "cli_test_util.h"
 #include "holefill/holes.h"
 #include "holefill/io.h"
 #include "test_meshes.h"
 
 namespace holefill {
 namespace {
-namespace fs = std::filesystem;
-
-const fs::path kAssets = HOLEFILL_ASSETS_DIR;
-
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-CliRun holefill_cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = cli::run(args, out, err);
-  return {code, out.str(), err.str()};
-}
-
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("holefill_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(::getpid()));  // two test runs on one machine must not share it
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string in_dir(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using namespace holefill::testing;
 
 TEST_F(Cli, InfoListsTheBunnysThreeHoles) {
-  const CliRun run = holefill_cli({"info", (kAssets / "bunny.obj").string()});
+  const CliRun run = run_cli({"info", (kAssets / "bunny.obj").string()});
   EXPECT_EQ(run.code, cli::kOk) << run.err;
   EXPECT_NE(run.out.find("3 holes"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("1 components"), std::string::npos) << run.out;
@@ -61,7 +18,7 @@ TEST_F(Cli, InfoListsTheBunnysThreeHoles) {
 
 TEST_F(Cli, FillWritesAClosedMeshAndAReport) {
   const std::string out = in_dir("bunny.ply"), report = in_dir("report.json");
-  const CliRun run = holefill_cli(
+  const CliRun run = run_cli(
       {"fill", (kAssets / "bunny.obj").string(), "-o", out, "--report", report, "--tau", "1.2"});
   ASSERT_EQ(run.code, cli::kOk) << run.err;
   const Mesh before = load_mesh(kAssets / "bunny.obj");
@@ -84,7 +41,7 @@ TEST_F(Cli, FillWritesAClosedMeshAndAReport) {
 
 TEST_F(Cli, FillKeepsTheOriginalPartBitForBit) {
   const std::string out = in_dir("sphere.obj");
-  ASSERT_EQ(holefill_cli({"fill", (kAssets / "sphere.obj").string(), "-o", out}).code, cli::kOk);
+  ASSERT_EQ(run_cli({"fill", (kAssets / "sphere.obj").string(), "-o", out}).code, cli::kOk);
   EXPECT_TRUE(testing::original_part_unchanged(load_mesh(kAssets / "sphere.obj"), load_mesh(out)));
 }
 
@@ -92,9 +49,9 @@ TEST_F(Cli, RemeshOnChangesOnlyThePatchAndIsReported) {
   const std::string bunny = (kAssets / "bunny.obj").string();
   const std::string plain = in_dir("plain.obj"), off = in_dir("off.obj"), on = in_dir("on.obj"),
                     report = in_dir("remesh.json");
-  ASSERT_EQ(holefill_cli({"fill", bunny, "-o", plain}).code, cli::kOk);
-  ASSERT_EQ(holefill_cli({"fill", bunny, "-o", off, "--remesh", "off"}).code, cli::kOk);
-  const CliRun run = holefill_cli({"fill", bunny, "-o", on, "--remesh", "on", "--report", report});
+  ASSERT_EQ(run_cli({"fill", bunny, "-o", plain}).code, cli::kOk);
+  ASSERT_EQ(run_cli({"fill", bunny, "-o", off, "--remesh", "off"}).code, cli::kOk);
+  const CliRun run = run_cli({"fill", bunny, "-o", on, "--remesh", "on", "--report", report});
   ASSERT_EQ(run.code, cli::kOk) << run.err;
   EXPECT_EQ(read_text(plain), read_text(off));  // off is the default, byte for byte
   EXPECT_NE(read_text(plain), read_text(on));
@@ -106,8 +63,8 @@ TEST_F(Cli, RemeshOnChangesOnlyThePatchAndIsReported) {
 
 TEST_F(Cli, SelectedHolesOnly) {
   const std::string out = in_dir("two.obj");
-  const CliRun run = holefill_cli({"fill", (kAssets / "bunny.obj").string(), "-o", out, "--holes",
-                                   "1,2", "--stage", "triangulate"});
+  const CliRun run = run_cli({"fill", (kAssets / "bunny.obj").string(), "-o", out, "--holes", "1,2",
+                              "--stage", "triangulate"});
   ASSERT_EQ(run.code, cli::kOk) << run.err;
   const auto holes = find_holes(load_mesh(out));
   ASSERT_EQ(holes.size(), 1u);
@@ -117,8 +74,7 @@ TEST_F(Cli, SelectedHolesOnly) {
 TEST_F(Cli, MaxBoundarySkipsLargerHoles) {
   const std::string out = in_dir("small.obj");
   ASSERT_EQ(
-      holefill_cli({"fill", (kAssets / "bunny.obj").string(), "-o", out, "--max-boundary", "40"})
-          .code,
+      run_cli({"fill", (kAssets / "bunny.obj").string(), "-o", out, "--max-boundary", "40"}).code,
       cli::kOk);
   EXPECT_EQ(find_holes(load_mesh(out)).size(), 1u);  // the 99-edge hole stays
 }
@@ -128,8 +84,8 @@ TEST_F(Cli, MaxBoundarySkipsLargerHoles) {
 TEST_F(Cli, RestrictedAboveSendsLargerHolesToTheRestrictedSearch) {
   const std::string bunny = (kAssets / "bunny.obj").string();
   const std::string full = in_dir("full.obj"), restricted = in_dir("restricted.obj");
-  ASSERT_EQ(holefill_cli({"fill", bunny, "-o", full, "--stage", "triangulate"}).code, cli::kOk);
-  const CliRun run = holefill_cli(
+  ASSERT_EQ(run_cli({"fill", bunny, "-o", full, "--stage", "triangulate"}).code, cli::kOk);
+  const CliRun run = run_cli(
       {"fill", bunny, "-o", restricted, "--stage", "triangulate", "--restricted-above", "20"});
   ASSERT_EQ(run.code, cli::kOk) << run.err;
   EXPECT_TRUE(find_holes(load_mesh(restricted)).empty());
@@ -152,7 +108,7 @@ TEST_F(Cli, UsageErrorsExitWithTwoAndWriteNothing) {
         {"fill", bunny, "-o", out, "--restricted-above", "many"},
         {"frobnicate"},
         {"info"}}) {
-    const CliRun run = holefill_cli(args);
+    const CliRun run = run_cli(args);
     EXPECT_EQ(run.code, cli::kUsage) << args.back();
     EXPECT_FALSE(run.err.empty());
     EXPECT_FALSE(fs::exists(out));
@@ -163,7 +119,7 @@ TEST_F(Cli, BadInputExitsWithThreeNamingTheFile) {
   const std::string broken = in_dir("broken.obj"), out = in_dir("x.obj");
   std::ofstream(broken) << "v 0 0 0\nv 1 1 nan\nv 0 1 0\nf 1 2 3\n";
   for (const std::string& input : {broken, in_dir("missing.off")}) {
-    const CliRun run = holefill_cli({"fill", input, "-o", out});
+    const CliRun run = run_cli({"fill", input, "-o", out});
     EXPECT_EQ(run.code, cli::kBadInput);
     EXPECT_NE(run.err.find(input), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out));
@@ -172,19 +128,9 @@ TEST_F(Cli, BadInputExitsWithThreeNamingTheFile) {
 
 TEST_F(Cli, UnwritableOutputExitsWithFourAndLeavesNoPartialFile) {
   const CliRun run =
-      holefill_cli({"fill", (kAssets / "bunny.obj").string(), "-o", in_dir("no/such/dir/x.obj")});
+      run_cli({"fill", (kAssets / "bunny.obj").string(), "-o", in_dir("no/such/dir/x.obj")});
   EXPECT_EQ(run.code, cli::kWriteFailed);
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator{}), 0);
-}
-
-TEST_F(Cli, HelpForEachCommand) {
-  for (const auto& args :
-       {std::vector<std::string>{"--help"}, {"help", "fill"}, {"fill", "--help"}, {"info", "-h"}}) {
-    const CliRun run = holefill_cli(args);
-    EXPECT_EQ(run.code, cli::kOk);
-    EXPECT_NE(run.out.find("usage"), std::string::npos);
-  }
-  EXPECT_NE(holefill_cli({"help", "fill"}).out.find("--remesh on|off"), std::string::npos);
 }
 
 }  // namespace

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
 #include "holefill/errors.h"
 #include "holefill/io.h"
+#include "run_cli.h"
 
 namespace holefill::testing {
 
@@ -46,17 +46,6 @@ inline std::string obj_text(const std::vector<Point>& points,
 }
 
 inline std::string obj_text(const Soup& soup) { return obj_text(soup.points, soup.faces); }
-
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-inline CliRun run_cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = cli::run(args, out, err);
-  return {code, out.str(), err.str()};
-}
 
 class ScratchTest : public ::testing::Test {
  protected:

@@ -1,0 +1,31 @@
+// The subcommands of `holefill`, each given its parsed arguments and the streams to write to.
+#pragma once
+
+#include <iosfwd>
+#include <stdexcept>
+#include <string>
+
+#include "cli.h"
+#include "fill_arguments.h"
+
+namespace holefill::cli {
+
+// A command line that parsed but asks for something impossible (a hole the mesh lacks, an
+// output format holefill cannot write): reported like CLI11's own errors, exit kUsage.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Whether the commands print their tables on stdout (-q: no); stderr is never silenced.
+enum class Verbosity { Quiet, Normal };
+
+struct Streams {
+  std::ostream& out;
+  std::ostream& err;
+  Verbosity verbosity = Verbosity::Normal;
+};
+
+int run_info(const std::string& input, const Streams& streams);
+int run_fill(FillArguments& arguments, const Streams& streams);
+
+}  // namespace holefill::cli

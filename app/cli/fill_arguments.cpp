@@ -1,0 +1,134 @@
+#include "fill_arguments.h"
+
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "number_checks.h"
+
+namespace holefill::cli {
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / M_PI;
+constexpr std::int64_t kNoLimit = std::numeric_limits<std::int64_t>::max();
+
+const std::vector<std::pair<std::string, Stage>> kStages{
+    {"triangulate", Stage::Triangulated}, {"refine", Stage::Refined}, {"smooth", Stage::Smoothed}};
+const std::vector<std::pair<std::string, SmoothMethod>> kSmoothMethods{
+    {"umbrella", SmoothMethod::Umbrella}, {"fair", SmoothMethod::Fair}};
+
+template <typename Value>
+std::vector<std::string> names(const std::vector<std::pair<std::string, Value>>& table) {
+  std::vector<std::string> result;
+  for (const auto& entry : table) result.push_back(entry.first);
+  return result;
+}
+
+template <typename Value>
+std::string name_of(const std::vector<std::pair<std::string, Value>>& table, Value value) {
+  for (const auto& entry : table) {
+    if (entry.second == value) return entry.first;
+  }
+  return {};
+}
+
+template <typename Value>
+Value value_of(const std::vector<std::pair<std::string, Value>>& table, const std::string& name) {
+  for (const auto& entry : table) {
+    if (entry.first == name) return entry.second;
+  }
+  return table.front().second;  // unreachable: CLI11 checked the name against the table
+}
+
+// The texts of the options that name a choice, set to the library's defaults.
+void set_defaults(FillArguments& a) {
+  a.weight = to_string(a.options.triangulate.weight);
+  a.stage = name_of(kStages, a.options.last_stage);
+  a.smooth = name_of(kSmoothMethods, a.options.smooth.method);
+  a.fair_weights = a.options.smooth.fair.cotangent_weights ? "cotangent" : "uniform";
+  a.remesh = a.options.refine.remesh ? "on" : "off";
+  a.fold_limit_degrees = a.options.triangulate.fold_limit * kDegreesPerRadian;
+}
+
+void add_triangulation_options(CLI::App& command, FillArguments& a) {
+  command.add_option("--weight", a.weight, "triangulation weight (maxmin: the paper's)")
+      ->check(CLI::IsMember({"maxmin", "liepa", "area"}));
+  command
+      .add_option("--fold-limit", a.fold_limit_degrees,
+                  "maxmin: dihedral angles above this (degrees) are minimised\n"
+                  "first (180: the paper's order)")
+      ->check(real_number(0.0, 180.0, true));
+  command
+      .add_option("--restricted-above", a.options.triangulate.restricted.above_edges,
+                  "larger holes (boundary edges) use the restricted search;\n"
+                  "0: always the full search, which takes at most " +
+                      std::to_string(kMaxFullSearchEdges) + " edges")
+      ->transform(whole_number(0, kNoLimit));
+}
+
+void add_refinement_and_smoothing_options(CLI::App& command, FillArguments& a) {
+  command.add_option("--tau", a.options.refine.tau, "refinement density factor")
+      ->check(real_number(0.0, std::numeric_limits<double>::max(), true));
+  command
+      .add_option("--remesh", a.remesh,
+                  "flip and relax the refined patch toward valence 6\n(not in the paper)")
+      ->check(CLI::IsMember({"on", "off"}));
+  command
+      .add_option("--smooth", a.smooth,
+                  "umbrella (the paper's) or fairing, which continues the\n"
+                  "surrounding curvature")
+      ->check(CLI::IsMember(names(kSmoothMethods)));
+  command
+      .add_option("--fair-order", a.options.smooth.fair.order,
+                  "fairing: 2 bi-Laplacian, 3 tri-Laplacian")
+      ->transform(whole_number(2, 3));
+  command.add_option("--fair-weights", a.fair_weights, "fairing: Laplacian weights")
+      ->check(CLI::IsMember({"cotangent", "uniform"}));
+  command
+      .add_option("--smooth-iterations", a.options.smooth.iterations,
+                  "umbrella smoothing iterations")
+      ->transform(whole_number(0, 1'000'000));
+  command.add_option("--smooth-step", a.options.smooth.step, "umbrella step lambda")
+      ->check(real_number(0.0, 1.0, true));
+}
+
+void add_selection_options(CLI::App& command, FillArguments& a) {
+  command
+      .add_option("--holes", a.hole_ids,
+                  "fill only these hole ids, e.g. 0,3 (as `holefill info`\n"
+                  "lists them; default all)")
+      ->delimiter(',')
+      ->default_str("")
+      ->transform(whole_number(0, kNoLimit));
+  command
+      .add_option("--max-boundary", a.selection.max_boundary_edges,
+                  "fill only holes with at most this many boundary edges\n(0: no limit)")
+      ->transform(whole_number(0, kNoLimit));
+  command.add_option("--stage", a.stage, "stop after this stage")
+      ->check(CLI::IsMember(names(kStages)));
+}
+
+}  // namespace
+
+void add_fill_options(CLI::App& command, FillArguments& a) {
+  set_defaults(a);
+  command.option_defaults()->always_capture_default();
+  command.add_option("MESH", a.input, "the mesh to fill (.obj .off .ply .stl)")->required();
+  command.add_option("-o,--output", a.output, "where to write the result (.obj .off .ply)")
+      ->required();
+  command.add_option("--report", a.report_path, "write per-hole statistics as JSON to this file");
+  add_triangulation_options(command, a);
+  add_refinement_and_smoothing_options(command, a);
+  add_selection_options(command, a);
+}
+
+void finish_fill_options(FillArguments& a) {
+  parse_weight(a.weight, a.options.triangulate.weight);
+  a.options.triangulate.fold_limit = a.fold_limit_degrees / kDegreesPerRadian;
+  a.options.refine.remesh = a.remesh == "on";
+  a.options.smooth.method = value_of(kSmoothMethods, a.smooth);
+  a.options.smooth.fair.cotangent_weights = a.fair_weights == "cotangent";
+  a.options.last_stage = value_of(kStages, a.stage);
+}
+
+}  // namespace holefill::cli

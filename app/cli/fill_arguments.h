@@ -1,0 +1,33 @@
+// The options of `holefill fill`: registered on a CLI11 subcommand with the defaults of the
+// library's option structs (so the help prints the real ones), then turned into those structs.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "holefill/fill.h"
+
+namespace holefill::cli {
+
+struct FillArguments {
+  std::string input;
+  std::string output;
+  std::string report_path;
+  std::vector<std::int64_t> hole_ids;  // as typed; checked against the mesh's holes later
+  HoleSelection selection;             // max_boundary_edges; hole_ids once checked
+  FillOptions options;
+
+  // Texts and units of the command line, converted into `options` by finish().
+  std::string weight, stage, smooth, fair_weights, remesh;
+  double fold_limit_degrees = 0.0;
+};
+
+// Adds fill's options to `command`, writing into `arguments` (which must outlive the parse).
+void add_fill_options(CLI::App& command, FillArguments& arguments);
+
+// Converts what the command line gave into `arguments.options` and `.selection` (after parsing).
+void finish_fill_options(FillArguments& arguments);
+
+}  // namespace holefill::cli

@@ -1,0 +1,110 @@
+// The conventions of a command-line tool, as CLI11 gives them: --version, --opt=value, --, help
+// with the library's real defaults, usage errors on stderr with exit 2, and numbers read exactly
+// (no octal, no silent wrap-around of hole ids).
+#include <sstream>
+
+#include "cli_test_util.h"
+#include "holefill/fill.h"
+#include "holefill/holes.h"
+#include "holefill/io.h"
+#include "holefill/version.h"
+
+namespace holefill {
+namespace {
+using namespace holefill::testing;
+
+std::string bunny() { return (kAssets / "bunny.obj").string(); }
+
+TEST_F(Cli, HelpForEachCommandOnStdout) {
+  for (const auto& args :
+       {std::vector<std::string>{"--help"}, {"help", "fill"}, {"fill", "--help"}, {"info", "-h"}}) {
+    const CliRun run = run_cli(args);
+    EXPECT_EQ(run.code, cli::kOk);
+    EXPECT_NE(run.out.find("Usage: holefill"), std::string::npos) << run.out;
+    EXPECT_TRUE(run.err.empty());
+  }
+}
+
+// The defaults printed are the option structs' own, not a copy typed into the help.
+TEST_F(Cli, FillHelpPrintsTheLibrarysDefaults) {
+  const FillOptions defaults;
+  const std::string help = run_cli({"help", "fill"}).out;
+  std::ostringstream tau, iterations, restricted, weight;
+  tau << "--tau FLOAT=" << defaults.refine.tau;
+  iterations << "--smooth-iterations INT=" << defaults.smooth.iterations;
+  restricted << "--restricted-above UINT=" << defaults.triangulate.restricted.above_edges;
+  weight << "}=" << to_string(defaults.triangulate.weight) << "\n";
+  for (const std::string& expected :
+       {tau.str(), iterations.str(), restricted.str(), weight.str()}) {
+    EXPECT_NE(help.find(expected), std::string::npos) << expected << "\n" << help;
+  }
+}
+
+TEST_F(Cli, VersionPrintsTheProjectVersion) {
+  const CliRun run = run_cli({"--version"});
+  EXPECT_EQ(run.code, cli::kOk);
+  EXPECT_EQ(run.out, "holefill " HOLEFILL_VERSION "\n");
+}
+
+TEST_F(Cli, NoArgumentsIsAUsageErrorOnStderr) {
+  const CliRun run = run_cli({});
+  EXPECT_EQ(run.code, cli::kUsage);
+  EXPECT_TRUE(run.out.empty());
+  EXPECT_NE(run.err.find("holefill --help"), std::string::npos) << run.err;
+}
+
+TEST_F(Cli, OptionEqualsValueAndDoubleDash) {
+  // "--" ends the options: a mesh whose name starts with '-' can be given after it.
+  const std::string odd = in_dir("-odd.obj");
+  std::filesystem::copy_file(bunny(), odd);
+  const std::string out = in_dir("out.obj");
+  const CliRun run = run_cli({"fill", "--stage=triangulate", "--holes=1,2", "-o", out, "--", odd});
+  ASSERT_EQ(run.code, cli::kOk) << run.err;
+  EXPECT_EQ(find_holes(load_mesh(out)).size(), 1u);
+}
+
+// -q before or after the command's name; it silences the table, never a warning.
+TEST_F(Cli, QuietPrintsNoTable) {
+  const std::string quad = in_dir("quad.obj");
+  std::ofstream(quad) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\n"
+                         "f 1 2 3 4\nf 1 2 5\nf 2 3 5\nf 3 4 5\n";
+  for (const auto& args : {std::vector<std::string>{"-q", "fill", bunny(), "-o", in_dir("q.obj")},
+                           {"fill", quad, "-o", in_dir("q.obj"), "-q"}}) {
+    const CliRun run = run_cli(args);
+    EXPECT_EQ(run.code, cli::kOk) << run.err;
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    EXPECT_EQ(run.err.find("triangulated") != std::string::npos, args[1] == quad) << run.err;
+  }
+}
+
+// Hole ids were read as int: 4294967296 filled hole 0 and 4294967298 hole 2; "010" is not 8.
+TEST_F(Cli, HoleIdsAreReadExactlyAndOutOfRangeIdsRefused) {
+  const std::string out = in_dir("x.obj");
+  for (const char* ids :
+       {"4294967296", "4294967298", "2147483648", "-1", "99999999999999999999", "0x1", "1e0"}) {
+    const CliRun run = run_cli({"fill", bunny(), "-o", out, "--holes", std::string(ids)});
+    EXPECT_EQ(run.code, cli::kUsage) << ids;
+    EXPECT_NE(run.err.find("--holes"), std::string::npos) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
+  const CliRun leading_zero =
+      run_cli({"fill", bunny(), "-o", out, "--holes", "010", "--stage", "triangulate"});
+  EXPECT_EQ(leading_zero.code, cli::kUsage);  // hole 10, not 8: the bunny has 3
+  EXPECT_NE(leading_zero.err.find("no hole 10"), std::string::npos) << leading_zero.err;
+}
+
+// 4e-324 is a positive double (the smallest): it was refused as "needs a number".
+TEST_F(Cli, NumbersAreRefusedWithTheirRange) {
+  const std::string out = in_dir("x.obj");
+  const CliRun tiny = run_cli({"fill", bunny(), "-o", out, "--tau", "4e-324", "--stage", "refine"});
+  EXPECT_EQ(tiny.err.find("needs a number"), std::string::npos) << tiny.err;
+  EXPECT_EQ(tiny.code, cli::kOk) << tiny.err;
+  for (const char* tau : {"1e400", "inf", "nan", "0", "-1", "1e-400"}) {
+    const CliRun run = run_cli({"fill", bunny(), "-o", out, "--tau", std::string(tau)});
+    EXPECT_EQ(run.code, cli::kUsage) << tau;
+    EXPECT_NE(run.err.find("> 0"), std::string::npos) << run.err;
+  }
+}
+
+}  // namespace
+}  // namespace holefill
