@@ -5,6 +5,11 @@
 // an edge non-manifold kept on their own copies of their corners, and a vertex where closed
 // surfaces touch split into one copy per surface. Every repair is
 // counted in a LoadReport; every refusal throws a FileError naming the file and the reason.
+// Text may start with a UTF-8 byte-order mark and end its lines with LF, CR LF or CR. Data after
+// what an OFF or PLY header counts (or a binary STL's triangle count) is ignored with a warning
+// rather than refused: the header is what the exporter meant, and trailing bytes are a common
+// exporter habit (padding, signatures); the warning tells a user whose counts are wrong.
+// load_mesh refuses what a file's first 64 KiB rule out before reading the rest.
 // Writes are atomic (temporary file, then rename).
 #pragma once
 

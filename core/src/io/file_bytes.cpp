@@ -1,9 +1,11 @@
 #include "file_bytes.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <random>
 
 #include "text_scan.h"
@@ -11,7 +13,11 @@
 namespace holefill::io {
 namespace fs = std::filesystem;
 
-std::string read_file_bytes(const fs::path& path) {
+namespace {
+
+// The regular file at `path`, open for reading. Throws FileError when it is missing, a directory
+// or another non-regular file, or cannot be opened.
+std::FILE* open_regular_file(const fs::path& path) {
   std::error_code ec;
   const auto status = fs::status(path, ec);
   if (!fs::exists(status)) fail(path, "no such file");
@@ -21,18 +27,45 @@ std::string read_file_bytes(const fs::path& path) {
   if (!file) {
     fail(path, std::string("cannot be opened for reading (") + std::strerror(errno) + ")");
   }
-  std::string bytes;
-  const auto size = fs::file_size(path, ec);
-  if (!ec) bytes.reserve(size);
+  return file;
+}
+
+// Appends up to `limit` bytes of `file` to `bytes`, then closes it; throws FileError on a read
+// error.
+void read_and_close(std::FILE* file, std::uint64_t limit, std::string& bytes,
+                    const fs::path& path) {
   char buffer[1 << 16];
-  for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, file)) > 0;) {
+  for (std::size_t got = 1; got > 0 && limit > 0; limit -= got) {
+    got = std::fread(buffer, 1,
+                     static_cast<std::size_t>(std::min<std::uint64_t>(sizeof buffer, limit)), file);
     bytes.append(buffer, got);
   }
   const bool failed = std::ferror(file) != 0;
   const int error = errno;
   std::fclose(file);
   if (failed) fail(path, std::string("could not be read (") + std::strerror(error) + ")");
+}
+
+}  // namespace
+
+std::string read_file_bytes(const fs::path& path) {
+  std::FILE* file = open_regular_file(path);
+  std::string bytes;
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  if (!ec) bytes.reserve(size);
+  read_and_close(file, std::numeric_limits<std::uint64_t>::max(), bytes, path);
   return bytes;
+}
+
+FileStart read_file_start(const fs::path& path) {
+  constexpr std::uint64_t kFirstBytes = 1 << 16;
+  std::FILE* file = open_regular_file(path);
+  FileStart start;
+  std::error_code ec;
+  start.size = fs::file_size(path, ec);
+  read_and_close(file, kFirstBytes, start.bytes, path);
+  return start;
 }
 
 void write_file_atomically(const fs::path& path, const std::string& bytes) {

@@ -2,6 +2,7 @@
 // disk (atomically).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -10,6 +11,14 @@ namespace holefill::io {
 // The whole contents of the regular file at `path`. Throws FileError when it is missing, a
 // directory or another non-regular file, or cannot be opened or read (with the system's reason).
 std::string read_file_bytes(const std::filesystem::path& path);
+
+// The first bytes of a file (up to 64 KiB) and its size, to refuse what they rule out before the
+// whole file is read. Throws FileError as read_file_bytes does.
+struct FileStart {
+  std::string bytes;
+  std::uint64_t size = 0;
+};
+FileStart read_file_start(const std::filesystem::path& path);
 
 // Puts `bytes` at `path`: either the whole file appears there or nothing changes (a temporary
 // file in the same folder, then a rename). Throws FileError when the folder is missing, `path`

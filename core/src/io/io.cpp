@@ -30,10 +30,11 @@ std::string upper(std::string text) {
 
 // The format to read `bytes` as: the contents' where they are unmistakable (with a warning when
 // the extension says otherwise), else the extension's.
-io::Format choose_format(const std::string& bytes, const fs::path& name, LoadReport& report) {
+io::Format choose_format(std::string_view bytes, const fs::path& name, LoadReport& report) {
   const std::string ext = lower_extension(name);
   const io::Format by_name = io::format_of_extension(ext);
-  const io::Format by_content = io::sniff(bytes);
+  io::Format by_content = io::sniff(bytes);
+  if (by_content == io::Format::Unknown) by_content = io::sniff(io::without_byte_order_mark(bytes));
   if (by_content == io::Format::Unknown || by_content == by_name) {
     if (by_name == io::Format::Unknown) {
       io::fail(name, "unsupported file type '" + ext + "' (use .obj, .off, .ply or .stl)");
@@ -56,15 +57,40 @@ io::Soup read_soup(io::Format format, std::string_view bytes, const fs::path& na
     case io::Format::Obj:
       return io::parse_obj(bytes, name, report);
     case io::Format::Off:
-      return io::parse_off(bytes, name);
+      return io::parse_off(bytes, name, report);
     case io::Format::Ply:
-      return io::parse_ply(bytes, name);
+      return io::parse_ply(bytes, name, report);
     case io::Format::Stl:
-      return io::parse_stl(bytes, name);
+      return io::parse_stl(bytes, name, report);
     case io::Format::Unknown:
       break;
   }
   io::fail(name, "unsupported file type");
+}
+
+// Refuses, from its first bytes, a file the whole of which could not be read, so that a huge
+// file is not read into memory first. A binary STL is recognised by its size.
+void check_start(const io::FileStart& start, const fs::path& path) {
+  std::uint32_t count = 0;
+  const std::string_view first = start.bytes;
+  if (io::binary_stl_size_matches(first, start.size, count)) return;
+  LoadReport ignored;
+  const io::Format format = choose_format(first, path, ignored);
+  const std::string_view text = io::without_byte_order_mark(first);
+  switch (format) {
+    case io::Format::Obj:
+      io::require_text(text, path, "OBJ");
+      break;
+    case io::Format::Off:
+      io::check_off_start(text, start.size - (first.size() - text.size()), path);
+      break;
+    case io::Format::Ply:
+      io::check_ply_start(text, start.size - (first.size() - text.size()), path);
+      break;
+    case io::Format::Stl:
+    case io::Format::Unknown:
+      break;
+  }
 }
 
 bool has_deleted_elements(const Mesh& mesh) {
@@ -96,13 +122,19 @@ Mesh load_mesh_from_memory(const std::string& bytes, const fs::path& name, LoadR
   if (bytes.empty()) io::fail(name, "is empty");
   const io::Format format = choose_format(bytes, name, out);
   out.format = io::name_of(format);
-  Mesh mesh = io::build_mesh(read_soup(format, bytes, name, out), out);
+  std::uint32_t triangles = 0;  // a binary STL's header may start with any bytes
+  const std::string_view text = io::binary_stl_size_matches(bytes, triangles)
+                                    ? std::string_view(bytes)
+                                    : io::without_byte_order_mark(bytes);
+  Mesh mesh = io::build_mesh(read_soup(format, text, name, out), out);
   if (mesh.n_faces() == 0) throw InvalidMeshError(name, "contains no faces");
   io::add_warnings(out);
   return mesh;
 }
 
 Mesh load_mesh(const fs::path& path, LoadReport* report) {
+  const io::FileStart start = io::read_file_start(path);
+  if (start.size > start.bytes.size()) check_start(start, path);
   return load_mesh_from_memory(io::read_file_bytes(path), path, report);
 }
 

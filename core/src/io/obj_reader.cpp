@@ -8,6 +8,14 @@
 
 namespace holefill::io {
 namespace fs = std::filesystem;
+namespace {
+
+// A backslash at the end of a line continues it on the next, unless it ends a comment.
+bool continues(std::string_view line) {
+  return !line.empty() && line.back() == '\\' && line.find('#') == std::string_view::npos;
+}
+
+}  // namespace
 
 Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) {
   require_text(text, path, "OBJ");
@@ -18,13 +26,12 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) 
   std::string joined;
   while (lines.next(line)) {
     const std::size_t line_number = lines.number();
-    // A backslash at the end of a line continues it on the next.
-    if (!line.empty() && line.back() == '\\') {
+    if (continues(line)) {
       joined.assign(line.substr(0, line.size() - 1));
       std::string_view more;
       bool continued = true;
       while (continued && lines.next(more)) {
-        continued = !more.empty() && more.back() == '\\';
+        continued = continues(more);
         joined += ' ';
         joined += more.substr(0, more.size() - (continued ? 1 : 0));
       }

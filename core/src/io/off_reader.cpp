@@ -23,20 +23,27 @@ bool parse_off_keyword(std::string_view keyword, bool& three_dimensional) {
   return prefix.empty();
 }
 
-Soup parse_off(std::string_view text, const fs::path& path) {
-  require_text(text, path, "OFF");
-  Lines lines(text);
-  // The next line with content, comments ('#' to the end of the line) removed.
-  auto next_content = [&lines](std::string_view& line) {
-    while (lines.next(line)) {
-      line = line.substr(0, line.find('#'));
-      skip_blanks(line);
-      if (!line.empty()) return true;
-    }
-    return false;
-  };
+namespace {
+
+// The next line with content, comments ('#' to the end of the line) removed.
+bool next_content(Lines& lines, std::string_view& line) {
+  while (lines.next(line)) {
+    line = line.substr(0, line.find('#'));
+    skip_blanks(line);
+    if (!line.empty()) return true;
+  }
+  return false;
+}
+
+struct OffCounts {
+  unsigned long long vertices = 0, faces = 0;
+};
+
+// Reads the keyword and counts from `lines`, checking them against the `file_size` bytes of the
+// file (`lines` may hold only its first bytes).
+OffCounts parse_off_header(Lines& lines, std::uint64_t file_size, const fs::path& path) {
   std::string_view line;
-  if (!next_content(line)) fail(path, "holds no OFF header, only blank or comment lines");
+  if (!next_content(lines, line)) fail(path, "holds no OFF header, only blank or comment lines");
   std::string_view rest = line;
   const std::string_view keyword = take_token(rest);
   bool three_dimensional = true;
@@ -50,7 +57,7 @@ Soup parse_off(std::string_view text, const fs::path& path) {
   if (rest.substr(0, 6) == "BINARY") {
     fail(path, "binary OFF is not supported; save it as ASCII OFF, PLY or OBJ");
   }
-  if (rest.empty() && !next_content(rest)) fail(path, "ends after its header keyword");
+  if (rest.empty() && !next_content(lines, rest)) fail(path, "ends after its header keyword");
   const std::size_t counts_line = lines.number();
   long long counts[2] = {0, 0};
   for (auto& count : counts) {
@@ -64,18 +71,29 @@ Soup parse_off(std::string_view text, const fs::path& path) {
   const auto face_count = static_cast<unsigned long long>(counts[1]);
   // A vertex takes at least 6 bytes ("0 0 0\n"), a face at least 2 ("0\n"): a header that
   // promises more than the file can hold is corrupt, and must not make us allocate for it.
-  const unsigned long long room = lines.remaining() + 1;
+  const std::uint64_t remaining = file_size - lines.offset();
+  const unsigned long long room = remaining + 1;
   if (vertex_count > room / 6 || face_count > room / 2 ||
       vertex_count * 6 + face_count * 2 > room + 1) {
     fail(path, at_line(counts_line) + "the header promises " + std::to_string(vertex_count) +
                    " vertices and " + std::to_string(face_count) +
-                   " faces, more than the remaining " + std::to_string(lines.remaining()) +
+                   " faces, more than the remaining " + std::to_string(remaining) +
                    " bytes of the file can hold (corrupt header or truncated file)");
   }
+  return {vertex_count, face_count};
+}
+
+}  // namespace
+
+Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report) {
+  require_text(text, path, "OFF");
+  Lines lines(text);
+  const auto [vertex_count, face_count] = parse_off_header(lines, text.size(), path);
+  std::string_view line;
   Soup soup;
   soup.positions.reserve(vertex_count);
   for (unsigned long long v = 0; v < vertex_count; ++v) {
-    if (!next_content(line)) {
+    if (!next_content(lines, line)) {
       fail(path, "ends after " + std::to_string(v) + " of its " + std::to_string(vertex_count) +
                      " vertices (truncated?)");
     }
@@ -91,7 +109,7 @@ Soup parse_off(std::string_view text, const fs::path& path) {
     soup.positions.push_back(p);
   }
   for (unsigned long long f = 0; f < face_count; ++f) {
-    if (!next_content(line)) {
+    if (!next_content(lines, line)) {
       fail(path, "ends after " + std::to_string(f) + " of its " + std::to_string(face_count) +
                      " faces (truncated?)");
     }
@@ -118,7 +136,21 @@ Soup parse_off(std::string_view text, const fs::path& path) {
     }
     soup.end_face(soup.corners.size(), lines.number());
   }
+  std::size_t extra_lines = 0;
+  while (next_content(lines, line)) ++extra_lines;
+  if (extra_lines) {
+    report.warnings.push_back(std::to_string(extra_lines) + " lines after the last of the " +
+                              std::to_string(face_count) +
+                              " faces the header counts were ignored (the header's counts may be "
+                              "too small)");
+  }
   return soup;
+}
+
+void check_off_start(std::string_view first_bytes, std::uint64_t file_size, const fs::path& path) {
+  Lines lines(first_bytes);
+  parse_off_header(lines, file_size, path);
+  require_text(first_bytes, path, "OFF");
 }
 
 }  // namespace holefill::io

@@ -1,82 +1,86 @@
 #include <algorithm>
-#include <charconv>
+#include <cmath>
 #include <cstring>
 #include <string>
 
+#include "ply_header.h"
 #include "readers.h"
 #include "text_scan.h"
 
 namespace holefill::io {
 namespace fs = std::filesystem;
-
 namespace {
 
-enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
-
-bool parse_ply_type(std::string_view name, PlyType& type) {
-  static const std::pair<std::string_view, PlyType> kNames[] = {
-      {"char", PlyType::Int8},      {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
-      {"uint8", PlyType::UInt8},    {"short", PlyType::Int16},     {"int16", PlyType::Int16},
-      {"ushort", PlyType::UInt16},  {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
-      {"int32", PlyType::Int32},    {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
-      {"float", PlyType::Float32},  {"float32", PlyType::Float32}, {"double", PlyType::Float64},
-      {"float64", PlyType::Float64}};
-  for (const auto& [text, value] : kNames) {
-    if (name == text) {
-      type = value;
-      return true;
-    }
-  }
-  return false;
-}
-
-std::size_t size_of(PlyType type) {
-  switch (type) {
-    case PlyType::Int8:
-    case PlyType::UInt8:
-      return 1;
-    case PlyType::Int16:
-    case PlyType::UInt16:
-      return 2;
-    case PlyType::Int32:
-    case PlyType::UInt32:
-    case PlyType::Float32:
-      return 4;
-    case PlyType::Float64:
-      return 8;
-  }
-  return 8;
-}
-
-bool is_integer_type(PlyType type) { return type != PlyType::Float32 && type != PlyType::Float64; }
-
-struct PlyProperty {
-  std::string name;
-  PlyType type = PlyType::Float32;  // of the items, for a list
-  bool is_list = false;
-  PlyType count_type = PlyType::UInt8;
-};
-
-struct PlyElement {
-  std::string name;
-  unsigned long long count = 0;
-  std::vector<PlyProperty> properties;
-};
-
-enum class PlyEncoding { Ascii, LittleEndian, BigEndian };
-
-// Reads the values of a PLY body, ASCII or binary, refusing to read past its end.
+// Reads the values of a PLY body record by record, ASCII (one record a line) or binary, refusing
+// to read past its end or, in ASCII, past a record's line.
 class PlyBody {
  public:
-  PlyBody(std::string_view bytes, PlyEncoding encoding, const fs::path& path)
-      : bytes_(bytes), encoding_(encoding), path_(path) {}
+  PlyBody(std::string_view bytes, const PlyHeader& header, const fs::path& path)
+      : bytes_(bytes),
+        lines_(bytes),
+        encoding_(header.encoding),
+        path_(path),
+        line_offset_(header.header_lines) {}
 
-  // Where the reader is, for messages: set by the caller before each element record.
-  void locate(const std::string& where) { where_ = where; }
+  // Starts the next record; `where` names it in messages.
+  void begin_record(const std::string& where) {
+    where_ = where;
+    if (encoding_ != PlyEncoding::Ascii) return;
+    if (!next_content_line(record_)) fail(path_, "ends before " + where_ + " (truncated?)");
+    where_ = at_line(line_number()) + where_;
+  }
+
+  // Ends the record: in ASCII, its line must hold no more values.
+  void end_record() {
+    if (encoding_ != PlyEncoding::Ascii) return;
+    skip_blanks(record_);
+    if (!record_.empty()) {
+      fail(path_, where_ + " has more values than the header's properties give it (" +
+                      quoted(record_) + " left over)");
+    }
+  }
+
   const std::string& where() const { return where_; }
 
   double read(PlyType type) {
-    if (encoding_ == PlyEncoding::Ascii) return read_text(type);
+    return encoding_ == PlyEncoding::Ascii ? read_text(type) : read_binary(type);
+  }
+
+  // Bytes left; for ASCII, an upper bound on the values left.
+  std::size_t remaining() const {
+    return encoding_ == PlyEncoding::Ascii ? record_.size() + 1 + bytes_.size() - lines_.offset()
+                                           : bytes_.size() - position_;
+  }
+
+  // What follows the last record, for a warning: "N lines" or "N bytes", or "" when nothing does.
+  std::string leftover() {
+    if (encoding_ != PlyEncoding::Ascii) {
+      return remaining() ? std::to_string(remaining()) + " bytes" : std::string();
+    }
+    std::size_t count = 0;
+    for (std::string_view line; next_content_line(line);) ++count;
+    return count ? std::to_string(count) + " lines" : std::string();
+  }
+
+ private:
+  std::size_t line_number() const { return line_offset_ + lines_.number(); }
+
+  bool next_content_line(std::string_view& line) {
+    while (lines_.next(line)) {
+      skip_blanks(line);
+      if (!line.empty()) return true;
+    }
+    return false;
+  }
+
+  template <class T>
+  static double load(const unsigned char* raw) {
+    T value;
+    std::memcpy(&value, raw, sizeof value);
+    return static_cast<double>(value);
+  }
+
+  double read_binary(PlyType type) {
     const std::size_t size = size_of(type);
     if (bytes_.size() - position_ < size) {
       fail(path_, "ends in the middle of " + where_ + " (truncated?)");
@@ -89,50 +93,30 @@ class PlyBody {
     if (swap) std::reverse(raw, raw + size);
     switch (type) {
       case PlyType::Int8:
-        return static_cast<double>(load<std::int8_t>(raw));
+        return load<std::int8_t>(raw);
       case PlyType::UInt8:
-        return static_cast<double>(load<std::uint8_t>(raw));
+        return load<std::uint8_t>(raw);
       case PlyType::Int16:
-        return static_cast<double>(load<std::int16_t>(raw));
+        return load<std::int16_t>(raw);
       case PlyType::UInt16:
-        return static_cast<double>(load<std::uint16_t>(raw));
+        return load<std::uint16_t>(raw);
       case PlyType::Int32:
-        return static_cast<double>(load<std::int32_t>(raw));
+        return load<std::int32_t>(raw);
       case PlyType::UInt32:
-        return static_cast<double>(load<std::uint32_t>(raw));
+        return load<std::uint32_t>(raw);
       case PlyType::Float32:
-        return static_cast<double>(load<float>(raw));
+        return load<float>(raw);
       case PlyType::Float64:
         return load<double>(raw);
     }
     return 0.0;
   }
 
-  // Bytes left; for ASCII, an upper bound on the values left.
-  std::size_t remaining() const { return bytes_.size() - position_; }
-  // The fewest bytes one value of `type` can take.
-  std::size_t smallest(PlyType type) const {
-    return encoding_ == PlyEncoding::Ascii ? 2 : size_of(type);
-  }
-
- private:
-  template <class T>
-  static T load(const unsigned char* raw) {
-    T value;
-    std::memcpy(&value, raw, sizeof value);
-    return value;
-  }
-
   double read_text(PlyType type) {
-    while (position_ < bytes_.size() &&
-           (is_blank(bytes_[position_]) || bytes_[position_] == '\n')) {
-      ++position_;
+    const std::string_view token = take_token(record_);
+    if (token.empty()) {
+      fail(path_, where_ + " has fewer values than the header's properties give it");
     }
-    std::size_t end = position_;
-    while (end < bytes_.size() && !is_blank(bytes_[end]) && bytes_[end] != '\n') ++end;
-    const std::string_view token = bytes_.substr(position_, end - position_);
-    position_ = end;
-    if (token.empty()) fail(path_, "ends in the middle of " + where_ + " (truncated?)");
     if (is_integer_type(type)) {
       long long value = 0;
       if (!parse_integer(token, value)) {
@@ -148,179 +132,108 @@ class PlyBody {
   }
 
   std::string_view bytes_;
+  Lines lines_;              // ASCII: the body's lines
+  std::string_view record_;  // ASCII: what is left of the current record's line
   PlyEncoding encoding_;
   const fs::path& path_;
-  std::size_t position_ = 0;
+  std::size_t line_offset_;
+  std::size_t position_ = 0;  // binary: the next byte
   std::string where_;
 };
 
-}  // namespace
-
-Soup parse_ply(std::string_view bytes, const fs::path& path) {
-  Lines lines(bytes);
-  std::string_view line;
-  std::string_view magic;
-  if (lines.next(line)) {
-    magic = line;
-    skip_blanks(magic);
-    while (!magic.empty() && is_blank(magic.back())) magic.remove_suffix(1);
+// The index of the property named one of `names` (not a list unless `list`), or -1.
+int find_property(const PlyElement& element, std::initializer_list<std::string_view> names,
+                  bool list) {
+  for (int i = 0; i < static_cast<int>(element.properties.size()); ++i) {
+    const auto& property = element.properties[i];
+    if (property.is_list != list) continue;
+    if (std::find(names.begin(), names.end(), property.name) != names.end()) return i;
   }
-  if (magic != "ply") fail(path, "does not start with the line 'ply'");
-  std::vector<PlyElement> elements;
-  PlyEncoding encoding = PlyEncoding::Ascii;
-  bool have_format = false, ended = false;
-  while (!ended && lines.next(line)) {
-    const std::string where = at_line(lines.number());
-    std::string_view rest = line;
-    const std::string_view keyword = take_token(rest);
-    if (keyword.empty() || keyword == "comment" || keyword == "obj_info") continue;
-    if (keyword == "format") {
-      const std::string_view name = take_token(rest);
-      if (name == "ascii") {
-        encoding = PlyEncoding::Ascii;
-      } else if (name == "binary_little_endian") {
-        encoding = PlyEncoding::LittleEndian;
-      } else if (name == "binary_big_endian") {
-        encoding = PlyEncoding::BigEndian;
-      } else {
-        fail(path, where + "unknown PLY format " + quoted(name));
-      }
-      have_format = true;
-    } else if (keyword == "element") {
-      PlyElement element;
-      element.name = std::string(take_token(rest));
-      long long count = -1;
-      const std::string_view count_text = take_token(rest);
-      if (element.name.empty() || !parse_integer(count_text, count) || count < 0) {
-        fail(path, where + "an element needs a name and a count, got " + quoted(line));
-      }
-      element.count = static_cast<unsigned long long>(count);
-      if (!take_token(rest).empty()) {
-        fail(path, where + "unexpected text after the element count in " + quoted(line));
-      }
-      elements.push_back(std::move(element));
-    } else if (keyword == "property") {
-      if (elements.empty()) fail(path, where + "a property before any element");
-      PlyProperty property;
-      std::string_view type_name = take_token(rest);
-      if (type_name == "list") {
-        property.is_list = true;
-        if (!parse_ply_type(take_token(rest), property.count_type) ||
-            !is_integer_type(property.count_type)) {
-          fail(path, where + "a list property needs an integer count type, got " + quoted(line));
-        }
-        type_name = take_token(rest);
-      }
-      if (!parse_ply_type(type_name, property.type)) {
-        fail(path, where + "unknown property type " + quoted(type_name));
-      }
-      property.name = std::string(take_token(rest));
-      if (property.name.empty()) fail(path, where + "a property needs a name");
-      if (!take_token(rest).empty()) {
-        fail(path, where + "unexpected text after the property name in " + quoted(line));
-      }
-      elements.back().properties.push_back(std::move(property));
-    } else if (keyword == "end_header") {
-      ended = true;
-    } else {
-      fail(path, where + "unknown header line " + quoted(line));
-    }
-  }
-  if (!ended) fail(path, "the header has no 'end_header' line (truncated?)");
-  if (!have_format) fail(path, "the header has no 'format' line");
-  const std::string_view body_bytes = bytes.substr(lines.offset());
-  if (encoding == PlyEncoding::Ascii) require_text(body_bytes, path, "ASCII PLY");
-  PlyBody body(body_bytes, encoding, path);
+  return -1;
+}
 
-  // A header that promises more records than the body can hold is corrupt, and must not make us
-  // allocate for them.
-  unsigned long long least_bytes = 0;
-  for (const auto& element : elements) {
-    std::size_t record = 0;
-    for (const auto& property : element.properties) {
-      record += body.smallest(property.is_list ? property.count_type : property.type);
-    }
-    if (record == 0) {
-      if (element.count == 0) continue;
-      fail(path, "the header gives the '" + element.name + "' element " +
-                     std::to_string(element.count) + " records but no properties (corrupt header)");
-    }
-    if (element.count > (body.remaining() + 1) / record ||
-        (least_bytes += element.count * record) > body.remaining() + 1) {
-      fail(path, "the header promises " + std::to_string(element.count) + " '" + element.name +
-                     "' elements, more than the remaining " + std::to_string(body.remaining()) +
-                     " bytes of the file can hold (corrupt header or truncated file)");
-    }
+// The face's list of vertex indices: the one named so, or else its first list.
+int face_list_of(const PlyElement& face) {
+  const int named = find_property(face, {"vertex_indices", "vertex_index"}, true);
+  if (named >= 0) return named;
+  for (int i = 0; i < static_cast<int>(face.properties.size()); ++i) {
+    if (face.properties[i].is_list) return i;
   }
+  return -1;
+}
 
-  Soup soup;
-  const PlyElement* vertex_element = nullptr;
-  std::vector<long long> corners;
-  for (const auto& element : elements) {
-    const bool is_vertex = element.name == "vertex";
-    const bool is_face = element.name == "face";
-    int axis_of[3] = {-1, -1, -1};  // property index of x, y, z
-    int face_list = -1;
+// Reads one element's records; positions and face corners go into `soup` and `corners`.
+void read_element(PlyBody& body, const PlyElement& element, Soup& soup,
+                  std::vector<long long>& corners, const fs::path& path) {
+  const bool is_vertex = element.name == "vertex";
+  const bool is_face = element.name == "face";
+  const int axis_of[3] = {find_property(element, {"x"}, false),
+                          find_property(element, {"y"}, false),
+                          find_property(element, {"z"}, false)};
+  const int face_list = is_face ? face_list_of(element) : -1;
+  if (is_vertex) soup.positions.reserve(element.count);
+  for (unsigned long long r = 0; r < element.count; ++r) {
+    body.begin_record("'" + element.name + "' element " + std::to_string(r) + " of " +
+                      std::to_string(element.count));
+    Point p(0.0, 0.0, 0.0);
     for (int i = 0; i < static_cast<int>(element.properties.size()); ++i) {
       const auto& property = element.properties[i];
-      if (is_vertex && !property.is_list) {
+      if (!property.is_list) {
+        const double value = body.read(property.type);
         for (int axis = 0; axis < 3; ++axis) {
-          if (property.name == std::string(1, static_cast<char>('x' + axis))) axis_of[axis] = i;
+          if (is_vertex && axis_of[axis] == i) p[axis] = value;
         }
+        continue;
       }
-      if (is_face && property.is_list &&
-          (face_list < 0 || property.name == "vertex_indices" || property.name == "vertex_index")) {
-        face_list = i;
+      const double count = body.read(property.count_type);
+      const std::size_t smallest = std::min<std::size_t>(2, size_of(property.type));
+      if (count < 0.0 || count > static_cast<double>(body.remaining() / smallest + 1)) {
+        fail(path, body.where() + ": a list claims " +
+                       std::to_string(static_cast<long long>(count)) +
+                       " items, more than the rest of the file holds (truncated or corrupt)");
+      }
+      for (long long item = 0; item < static_cast<long long>(count); ++item) {
+        const double value = body.read(property.type);
+        if (i != face_list) continue;
+        if (value < 0.0 || value != std::floor(value) || value > kMaxVertices) {
+          fail(path, "face " + std::to_string(r) + " has an invalid vertex index " +
+                         std::to_string(value));
+        }
+        corners.push_back(static_cast<long long>(value));
       }
     }
+    body.end_record();
     if (is_vertex) {
-      if (axis_of[0] < 0 || axis_of[1] < 0 || axis_of[2] < 0) {
-        fail(path, "the vertex element lacks an x, y or z property");
-      }
-      if (element.count > static_cast<unsigned long long>(kMaxVertices)) {
-        fail(path, "more vertices than holefill supports");
-      }
-      vertex_element = &element;
-      soup.positions.reserve(element.count);
+      require_finite(p, r, 0, path);
+      soup.positions.push_back(p);
     }
-    for (unsigned long long r = 0; r < element.count; ++r) {
-      body.locate("'" + element.name + "' element " + std::to_string(r) + " of " +
-                  std::to_string(element.count));
-      Point p(0.0, 0.0, 0.0);
-      for (int i = 0; i < static_cast<int>(element.properties.size()); ++i) {
-        const auto& property = element.properties[i];
-        if (!property.is_list) {
-          const double value = body.read(property.type);
-          for (int axis = 0; axis < 3; ++axis) {
-            if (is_vertex && axis_of[axis] == i) p[axis] = value;
-          }
-          continue;
-        }
-        const double count = body.read(property.count_type);
-        if (count < 0.0 ||
-            count > static_cast<double>(body.remaining() / body.smallest(property.type) + 1)) {
-          fail(path, body.where() + ": a list claims " +
-                         std::to_string(static_cast<long long>(count)) +
-                         " items, more than the rest of the file holds (truncated or corrupt)");
-        }
-        for (long long item = 0; item < static_cast<long long>(count); ++item) {
-          const double value = body.read(property.type);
-          if (i != face_list) continue;
-          if (value < 0.0 || value != std::floor(value) || value > kMaxVertices) {
-            fail(path, "face " + std::to_string(r) + " has an invalid vertex index " +
-                           std::to_string(value));
-          }
-          corners.push_back(static_cast<long long>(value));
-        }
-      }
-      if (is_vertex) {
-        require_finite(p, r, 0, path);
-        soup.positions.push_back(p);
-      }
-      if (is_face) soup.end_face(corners.size(), 0);
-    }
+    if (is_face) soup.end_face(corners.size(), 0);
   }
-  if (!vertex_element) fail(path, "has no 'vertex' element");
+}
+
+}  // namespace
+
+void check_ply_start(std::string_view first_bytes, std::uint64_t file_size, const fs::path& path) {
+  if (first_bytes.find("end_header") == std::string_view::npos) return;
+  const PlyHeader header = parse_ply_header(first_bytes, file_size, path);
+  if (header.encoding == PlyEncoding::Ascii) {
+    require_text(first_bytes.substr(header.body_offset), path, "ASCII PLY");
+  }
+}
+
+Soup parse_ply(std::string_view bytes, const fs::path& path, LoadReport& report) {
+  const PlyHeader header = parse_ply_header(bytes, bytes.size(), path);
+  const std::string_view body_bytes = bytes.substr(header.body_offset);
+  if (header.encoding == PlyEncoding::Ascii) require_text(body_bytes, path, "ASCII PLY");
+  PlyBody body(body_bytes, header, path);
+  Soup soup;
+  std::vector<long long> corners;
+  for (const auto& element : header.elements) read_element(body, element, soup, corners, path);
+  const std::string leftover = body.leftover();
+  if (!leftover.empty()) {
+    report.warnings.push_back(leftover + " after the last record the header counts were ignored " +
+                              "(the header's counts may be too small)");
+  }
   const long long vertex_count = static_cast<long long>(soup.positions.size());
   soup.corners.reserve(corners.size());
   for (std::size_t f = 0, c = 0; f < soup.face_count(); ++f) {

@@ -26,15 +26,21 @@ Format sniff(std::string_view bytes);
 // counted in report.elements_ignored.
 Soup parse_obj(std::string_view text, const std::filesystem::path& path, LoadReport& report);
 
-// ASCII OFF, 3D, with the optional ST/C/N prefixes of the keyword.
-Soup parse_off(std::string_view text, const std::filesystem::path& path);
+// ASCII OFF, 3D, with the optional ST/C/N prefixes of the keyword. Lines after the counted
+// faces are ignored with a warning.
+Soup parse_off(std::string_view text, const std::filesystem::path& path, LoadReport& report);
 
 // PLY, ASCII or binary of either byte order: the vertex element's x, y, z and the face
-// element's vertex index list.
-Soup parse_ply(std::string_view bytes, const std::filesystem::path& path);
+// element's vertex index list. ASCII is read one record a line; a line with more or fewer values
+// than the header's properties is refused, naming it. Data after the counted records: a warning.
+Soup parse_ply(std::string_view bytes, const std::filesystem::path& path, LoadReport& report);
 
 // STL, binary (when the size matches the header's count) or ASCII; equal corners are welded.
-Soup parse_stl(std::string_view bytes, const std::filesystem::path& path);
+Soup parse_stl(std::string_view bytes, const std::filesystem::path& path, LoadReport& report);
+
+// Refuses, from the first bytes of an OFF file of `file_size` bytes, what its header rules out.
+void check_off_start(std::string_view first_bytes, std::uint64_t file_size,
+                     const std::filesystem::path& path);
 
 // "OFF" with the optional prefixes of the format: ST (texture), C (colour), N (normal), 4 (4D),
 // n (nD). Returns false when `keyword` is no OFF keyword.
@@ -42,5 +48,13 @@ bool parse_off_keyword(std::string_view keyword, bool& three_dimensional);
 
 // The triangle count in a binary STL header, and whether the file's size agrees with it.
 bool binary_stl_size_matches(std::string_view bytes, std::uint32_t& count);
+// The same from a file's first bytes (at least 84) and its size.
+bool binary_stl_size_matches(std::string_view first_bytes, std::uint64_t file_size,
+                             std::uint32_t& count);
+
+// Refuses, from the first bytes of a PLY file of `file_size` bytes, what its header rules out
+// (when those bytes hold the whole header).
+void check_ply_start(std::string_view first_bytes, std::uint64_t file_size,
+                     const std::filesystem::path& path);
 
 }  // namespace holefill::io

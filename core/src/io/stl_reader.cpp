@@ -33,12 +33,18 @@ constexpr std::size_t kStlHeader = 84, kStlRecord = 50;
 }  // namespace
 
 bool binary_stl_size_matches(std::string_view bytes, std::uint32_t& count) {
+  return binary_stl_size_matches(bytes, bytes.size(), count);
+}
+
+bool binary_stl_size_matches(std::string_view first_bytes, std::uint64_t file_size,
+                             std::uint32_t& count) {
+  const std::string_view bytes = first_bytes;
   if (bytes.size() < kStlHeader) return false;
   unsigned char raw[4];
   std::memcpy(raw, bytes.data() + 80, 4);
   count = static_cast<std::uint32_t>(raw[0]) | static_cast<std::uint32_t>(raw[1]) << 8 |
           static_cast<std::uint32_t>(raw[2]) << 16 | static_cast<std::uint32_t>(raw[3]) << 24;
-  return kStlHeader + kStlRecord * static_cast<std::uint64_t>(count) == bytes.size();
+  return kStlHeader + kStlRecord * static_cast<std::uint64_t>(count) == file_size;
 }
 
 namespace {
@@ -117,25 +123,31 @@ Soup parse_ascii_stl(std::string_view text, const fs::path& path) {
 
 }  // namespace
 
-Soup parse_stl(std::string_view bytes, const fs::path& path) {
+// A file that is no ASCII STL is read as binary when its header's triangles fit in it; bytes
+// after them (padding, an exporter's signature) are ignored with a warning, since the count says
+// where the mesh ends.
+Soup parse_stl(std::string_view bytes, const fs::path& path, LoadReport& report) {
   std::uint32_t count = 0;
   if (binary_stl_size_matches(bytes, count)) return parse_binary_stl(bytes, count, path);
-  const std::string binary_size =
-      bytes.size() < kStlHeader
-          ? "it is shorter than a binary STL's 84-byte header"
-          : "a binary STL with the " + std::to_string(count) +
-                " triangles its header counts takes " +
-                std::to_string(kStlHeader + kStlRecord * static_cast<std::uint64_t>(count)) +
-                " bytes, but the file has " + std::to_string(bytes.size());
-  if (!starts_with_word(bytes, "solid")) {
-    fail(path, "is not an ASCII STL (it does not start with 'solid'), and " + binary_size +
-                   " (truncated or not an STL)");
+  const bool ascii = starts_with_word(bytes, "solid") && bytes.find('\0') == std::string_view::npos;
+  if (ascii) return parse_ascii_stl(bytes, path);
+  if (bytes.size() < kStlHeader) {
+    fail(path,
+         "is no ASCII STL (it does not start with 'solid') and shorter than a binary STL's "
+         "84-byte header (truncated or not an STL)");
   }
-  if (bytes.find('\0') != std::string_view::npos) {
-    fail(path, "starts like an ASCII STL but holds binary data; read as a binary STL, " +
-                   binary_size + " (truncated?)");
+  const std::uint64_t needed = kStlHeader + kStlRecord * static_cast<std::uint64_t>(count);
+  if (needed > bytes.size()) {
+    fail(path,
+         "is not an ASCII STL (it does not start with 'solid', or holds binary data), and "
+         "as a binary STL it is truncated or corrupt: its header counts " +
+             std::to_string(count) + " triangles, the file holds " +
+             std::to_string((bytes.size() - kStlHeader) / kStlRecord));
   }
-  return parse_ascii_stl(bytes, path);
+  report.warnings.push_back(std::to_string(bytes.size() - needed) + " bytes after the " +
+                            std::to_string(count) +
+                            " triangles the binary STL header counts were ignored");
+  return parse_binary_stl(bytes, count, path);
 }
 
 }  // namespace holefill::io

@@ -69,13 +69,14 @@ bool parse_integer(std::string_view token, long long& value) {
   return stop == end && error == std::errc();
 }
 
+// A line ends at LF, CR LF or a lone CR (classic Mac files).
 bool Lines::next(std::string_view& line) {
   if (position_ >= text_.size()) return false;
-  std::size_t end = text_.find('\n', position_);
+  std::size_t end = text_.find_first_of("\r\n", position_);
   if (end == std::string_view::npos) end = text_.size();
   line = text_.substr(position_, end - position_);
-  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
   position_ = end + 1;
+  if (end + 1 < text_.size() && text_[end] == '\r' && text_[end + 1] == '\n') ++position_;
   ++number_;
   return true;
 }
@@ -86,6 +87,11 @@ void require_text(std::string_view text, const fs::path& path, const char* forma
     fail(path, std::string("is not a text ") + format + " file: it holds binary data (byte " +
                    std::to_string(nul) + " is NUL)");
   }
+}
+
+std::string_view without_byte_order_mark(std::string_view bytes) {
+  constexpr std::string_view kMark = "\xEF\xBB\xBF";
+  return bytes.substr(0, kMark.size()) == kMark ? bytes.substr(kMark.size()) : bytes;
 }
 
 bool starts_with_word(std::string_view text, std::string_view word) {

@@ -53,6 +53,10 @@ class Lines {
 // naming `format`.
 void require_text(std::string_view text, const std::filesystem::path& path, const char* format);
 
+// `bytes` without the UTF-8 byte-order mark some editors put first (the bytes as they are without
+// one).
+std::string_view without_byte_order_mark(std::string_view bytes);
+
 // `text` starts, after blank lines and blanks, with the whole word `word`.
 bool starts_with_word(std::string_view text, std::string_view word);
 

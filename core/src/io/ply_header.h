@@ -1,0 +1,48 @@
+// The header of a PLY file: its encoding, elements and their typed properties, and where the
+// body starts. Checked against the size of the whole file, so that a corrupt or absurd header is
+// refused before any of the body is read.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace holefill::io {
+
+enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
+// Bytes one value of `type` takes in a binary body.
+std::size_t size_of(PlyType type);
+bool is_integer_type(PlyType type);
+
+struct PlyProperty {
+  std::string name;
+  PlyType type = PlyType::Float32;  // of the items, for a list
+  bool is_list = false;
+  PlyType count_type = PlyType::UInt8;
+};
+
+struct PlyElement {
+  std::string name;
+  unsigned long long count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+enum class PlyEncoding { Ascii, LittleEndian, BigEndian };
+
+struct PlyHeader {
+  PlyEncoding encoding = PlyEncoding::Ascii;
+  std::vector<PlyElement> elements;
+  std::size_t body_offset = 0;   // bytes before the body
+  std::size_t header_lines = 0;  // lines before the body, for messages about ASCII body lines
+};
+
+// The header at the start of `bytes` (which may be only the file's first bytes) of a PLY file of
+// `file_size` bytes. Throws FileError naming the line and reason for a malformed header, a vertex
+// element without x, y and z, or counts that more bytes than the file has would be needed for.
+PlyHeader parse_ply_header(std::string_view bytes, std::uint64_t file_size,
+                           const std::filesystem::path& path);
+
+}  // namespace holefill::io
