@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "face_grid.h"
+#include "holefill/loop_groups.h"
 #include "patch_intersections.h"
 #include "stage_undo.h"
 
@@ -173,21 +174,38 @@ bool HoleSelection::includes(const Hole& hole) const {
   return hole_ids.empty() || std::find(hole_ids.begin(), hole_ids.end(), hole.id) != hole_ids.end();
 }
 
+HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
+                           const FillOptions& options) {
+  JoinedLoops joined;
+  const double seconds =
+      timed([&] { joined = plan_joined_loops(mesh, loops, options.triangulate, options.join); });
+  HoleFill fill = fill_planned(mesh, joined.polygon, options, &joined.plan, nullptr);
+  fill.times.triangulate_seconds += seconds;
+  fill.boundary_edges = 0;
+  for (const Hole* loop : loops) {
+    fill.boundary_edges += loop->size();
+    if (loop != loops.front()) fill.joined_holes.push_back(loop->id);
+  }
+  return fill;
+}
+
 std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
                                  const FillOptions& options, const HoleSelection& selection) {
-  std::vector<const Hole*> chosen;
-  for (const auto& hole : holes) {
-    if (selection.includes(hole)) chosen.push_back(&hole);
+  std::vector<LoopGroup> chosen;
+  for (auto& group : group_loops(mesh, holes, find_islands(mesh, holes, options.islands),
+                                 selection.bridges, options.join)) {
+    if (selects(selection, group, holes)) chosen.push_back(std::move(group));
   }
   // The dynamic programs only read the mesh and dominate the time: run them on every core,
   // largest holes first (holes come sorted by size), then add the patches one by one.
-  std::vector<PlannedTriangulation> plans(chosen.size());
+  std::vector<GroupPlan> plans(chosen.size());
   std::vector<double> plan_seconds(chosen.size(), 0.0);
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     for (std::size_t i = next++; i < chosen.size(); i = next++) {
-      plan_seconds[i] =
-          timed([&] { plans[i] = plan_triangulation(mesh, *chosen[i], options.triangulate); });
+      plan_seconds[i] = timed([&] {
+        plans[i] = plan_group(mesh, holes, chosen[i], options.triangulate, options.join);
+      });
     }
   };
   const unsigned threads =
@@ -201,9 +219,12 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
   detail::FaceGrid index = detail::FaceGrid::of_mesh(mesh);
   std::vector<HoleFill> fills;
   for (std::size_t i = 0; i < chosen.size(); ++i) {
-    fills.push_back(fill_planned(mesh, *chosen[i], options, &plans[i], &index));
-    fills.back().times.triangulate_seconds += plan_seconds[i];
-    for (const auto f : fills.back().patch.faces) index.add(f.idx(), detail::box_of(mesh, f));
+    HoleFill& fill =
+        fills.emplace_back(fill_planned(mesh, plans[i].polygon, options, &plans[i].plan, &index));
+    fill.times.triangulate_seconds += plan_seconds[i];
+    fill.boundary_edges = chosen[i].boundary_edges(holes);
+    fill.joined_holes.assign(chosen[i].holes.begin() + 1, chosen[i].holes.end());
+    for (const auto f : fill.patch.faces) index.add(f.idx(), detail::box_of(mesh, f));
   }
   return fills;
 }

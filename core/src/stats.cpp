@@ -53,27 +53,34 @@ std::map<int, std::size_t> valence_histogram(const Mesh& mesh) {
   return histogram;
 }
 
-std::size_t connected_components(const Mesh& mesh) {
-  std::vector<char> seen(mesh.n_vertices(), 0);
+std::vector<int> component_labels(const Mesh& mesh) {
+  std::vector<int> label(mesh.n_vertices(), -1);
   std::vector<VertexHandle> stack;
-  std::size_t components = 0;
+  int components = 0;
   for (const auto start : mesh.vertices()) {
-    if (seen[start.idx()]) continue;
-    ++components;
-    seen[start.idx()] = 1;
+    if (label[start.idx()] >= 0) continue;
+    label[start.idx()] = components;
     stack.push_back(start);
     while (!stack.empty()) {
       const VertexHandle v = stack.back();
       stack.pop_back();
       for (const auto w : mesh.vv_range(v)) {
-        if (!seen[w.idx()]) {
-          seen[w.idx()] = 1;
+        if (label[w.idx()] < 0) {
+          label[w.idx()] = components;
           stack.push_back(w);
         }
       }
     }
+    ++components;
   }
-  return components;
+  return label;
+}
+
+std::size_t connected_components(const Mesh& mesh) {
+  const std::vector<int> label = component_labels(mesh);
+  return label.empty()
+             ? 0
+             : static_cast<std::size_t>(*std::max_element(label.begin(), label.end()) + 1);
 }
 
 }  // namespace holefill

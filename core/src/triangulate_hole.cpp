@@ -14,7 +14,9 @@ HolePolygon hole_polygon(const Mesh& mesh, const Hole& hole) {
   std::unordered_map<int, std::vector<int>> positions_of_vertex;
   for (int i = 0; i < n; ++i) {
     polygon.points.push_back(mesh.point(hole.vertices[i]));
-    const FaceHandle outside = mesh.opposite_face_handle(hole.halfedges[i]);
+    // An invalid halfedge is a bridge between two loops (bridge.h): nothing lies across it.
+    const FaceHandle outside =
+        hole.halfedges[i].is_valid() ? mesh.opposite_face_handle(hole.halfedges[i]) : FaceHandle();
     polygon.outside_normals.push_back(outside.is_valid() ? mesh.calc_face_normal(outside)
                                                          : Point(0.0, 0.0, 0.0));
     positions_of_vertex[hole.vertices[i].idx()].push_back(i);

@@ -9,22 +9,18 @@
 
 #include "holefill/holes.h"
 #include "holefill/patch.h"
+#include "island_meshes.h"
 #include "test_meshes.h"
 
 namespace holefill {
 namespace {
 
+using testing::euler_characteristic;
 using testing::is_oriented_manifold;
 using testing::make_grid;
 using testing::make_icosphere;
 using testing::original_part_unchanged;
 using testing::without_faces;
-
-long euler_characteristic(const Mesh& mesh) {
-  long used_vertices = 0;
-  for (const auto v : mesh.vertices()) used_vertices += mesh.is_isolated(v) ? 0 : 1;
-  return used_vertices - static_cast<long>(mesh.n_edges()) + static_cast<long>(mesh.n_faces());
-}
 
 // A sphere with a wavy cap cut out, and a second, small hole elsewhere.
 Mesh sphere_with_two_holes() {

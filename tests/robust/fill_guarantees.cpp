@@ -72,6 +72,7 @@ std::string check_fill_guarantees(const Mesh& before, const std::vector<Hole>& h
     }
     if (fill.stage() == Stage::Original) continue;
     filled.insert(fill.hole_id);
+    filled.insert(fill.joined_holes.begin(), fill.joined_holes.end());  // its islands
     for (const auto f : fill.patch.faces) {
       if (!patch_faces.insert(f.idx()).second) return "a face is in two patches";
     }

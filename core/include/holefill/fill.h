@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "holefill/bridge.h"
 #include "holefill/holes.h"
+#include "holefill/islands.h"
 #include "holefill/mesh.h"
 #include "holefill/patch.h"
 #include "holefill/refine.h"
@@ -21,6 +23,8 @@ struct FillOptions {
   RefineOptions refine;
   SmoothOptions smooth;
   Stage last_stage = Stage::Smoothed;  // fill_hole stops after this stage
+  IslandOptions islands;               // fill_holes fills each hole with its islands (islands.h)
+  JoinOptions join;                    // how loops filled together are joined (bridge.h)
 };
 
 struct StageTimes {
@@ -36,7 +40,9 @@ struct HoleFill {
   std::size_t boundary_edges = 0;
   Patch patch;          // patch.stage is the last stage run (Original: not started)
   std::string failure;  // set when a stage could not run; the mesh is then unchanged
-  PatchStats stats;     // after the last stage run
+  // The other loops this patch closes with hole_id's: its islands, or the hole bridged to it.
+  std::vector<int> joined_holes;
+  PatchStats stats;  // after the last stage run
   StageTimes times;
   RefineResult refinement;
   std::string smoothing_note;   // e.g. why fairing fell back to umbrella smoothing
@@ -57,11 +63,19 @@ bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& op
 // Runs the stages up to options.last_stage on one hole.
 HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options);
 
+// Fills the region that several loops bound (a hole and its islands, two holes to bridge; the
+// first loop's id becomes the fill's) with one patch, through the same stages (bridge.h).
+HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
+                           const FillOptions& options);
+
 // Which holes fill_holes takes: the listed ids (all when empty), and only those with at most
-// max_boundary_edges boundary edges (no limit when 0).
+// max_boundary_edges boundary edges (no limit when 0). A hole comes with its islands and the
+// hole bridged to it (the limit then applies to their edges together; listing any one of them
+// takes them all).
 struct HoleSelection {
   std::vector<int> hole_ids;
   std::size_t max_boundary_edges = 0;
+  std::vector<std::pair<int, int>> bridges = {};  // pairs of holes joined by one band (bridge.h)
   bool includes(const Hole& hole) const;
 };
 
@@ -69,7 +83,8 @@ struct HoleSelection {
 // intersect other than along the vertices and edges they share. Degenerate triangles are skipped.
 std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch);
 
-// Fills the selected holes of `holes` (as find_holes gave them for this mesh), in order.
+// Fills the selected holes of `holes` (as find_holes gave them for this mesh), in order, each
+// with its islands (options.islands) and the hole bridged to it (loop_groups.h).
 std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
                                  const FillOptions& options, const HoleSelection& selection = {});
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <vector>
 
 #include "holefill/mesh.h"
 #include "holefill/patch.h"
@@ -26,5 +27,8 @@ std::map<int, std::size_t> valence_histogram(const Mesh& mesh);
 
 // Number of connected components (vertices joined by edges; isolated vertices count as one each).
 std::size_t connected_components(const Mesh& mesh);
+
+// The connected component of each vertex (by index), numbered 0, 1, ... in order of first vertex.
+std::vector<int> component_labels(const Mesh& mesh);
 
 }  // namespace holefill

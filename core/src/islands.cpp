@@ -1,0 +1,295 @@
+#include "holefill/islands.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+#include "holefill/stats.h"
+
+namespace holefill {
+namespace {
+
+// A loop touches another when it comes this close to it, in the surrounding edge length.
+constexpr double kTouchingFraction = 0.1;
+
+struct Point2 {
+  double x, y;
+};
+
+// A hole's plane (through its centroid, normal to its vector area) and its outline there.
+struct LoopPlane {
+  Point centroid{0.0, 0.0, 0.0}, normal{0.0, 0.0, 0.0}, u{0.0, 0.0, 0.0}, v{0.0, 0.0, 0.0};
+  double area = 0.0;    // of the outline
+  double radius = 0.0;  // largest distance of a loop vertex from the centroid
+  std::vector<Point2> outline;
+
+  Point2 project(const Point& p) const {
+    const Point d = p - centroid;
+    return {OpenMesh::dot(d, u), OpenMesh::dot(d, v)};
+  }
+  double height(const Point& p) const { return OpenMesh::dot(p - centroid, normal); }
+};
+
+std::vector<Point> loop_points(const Mesh& mesh, const Hole& hole) {
+  std::vector<Point> points;
+  for (const auto v : hole.vertices) points.push_back(mesh.point(v));
+  return points;
+}
+
+LoopPlane loop_plane(const std::vector<Point>& points, const Point& centroid) {
+  LoopPlane plane;
+  plane.centroid = centroid;
+  Point vector_area(0.0, 0.0, 0.0);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    vector_area +=
+        OpenMesh::cross(points[i] - centroid, points[(i + 1) % points.size()] - centroid);
+    plane.radius = std::max(plane.radius, (points[i] - centroid).norm());
+  }
+  plane.area = 0.5 * vector_area.norm();
+  if (!(plane.area > 0.0)) return plane;
+  plane.normal = vector_area.normalized();
+  const Point axis = std::abs(plane.normal[0]) < 0.9 ? Point(1, 0, 0) : Point(0, 1, 0);
+  plane.u = OpenMesh::cross(plane.normal, axis).normalized();
+  plane.v = OpenMesh::cross(plane.normal, plane.u);
+  for (const auto& p : points) plane.outline.push_back(plane.project(p));
+  return plane;
+}
+
+double cross2(const Point2& o, const Point2& a, const Point2& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+double signed_area(const std::vector<Point2>& outline) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    twice += cross2({0.0, 0.0}, outline[i], outline[(i + 1) % outline.size()]);
+  }
+  return 0.5 * twice;
+}
+
+// Even-odd rule: the horizontal ray from p to the right crosses the outline an odd number of times.
+bool inside(const Point2& p, const std::vector<Point2>& outline) {
+  bool in = false;
+  for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+    const Point2 &a = outline[i], &b = outline[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
+      in = !in;
+    }
+  }
+  return in;
+}
+
+bool segments_cross(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  const double abc = cross2(a, b, c), abd = cross2(a, b, d);
+  const double cda = cross2(c, d, a), cdb = cross2(c, d, b);
+  return ((abc > 0) != (abd > 0)) && ((cda > 0) != (cdb > 0));
+}
+
+// Every point of `inner` inside `outer`, and no edge of one crossing an edge of the other.
+bool outline_inside(const std::vector<Point2>& inner, const std::vector<Point2>& outer) {
+  for (const auto& p : inner) {
+    if (!inside(p, outer)) return false;
+  }
+  for (std::size_t i = 0; i < inner.size(); ++i) {
+    const Point2 &a = inner[i], &b = inner[(i + 1) % inner.size()];
+    for (std::size_t j = 0; j < outer.size(); ++j) {
+      if (segments_cross(a, b, outer[j], outer[(j + 1) % outer.size()])) return false;
+    }
+  }
+  return true;
+}
+
+double distance_to_segment(const Point& p, const Point& a, const Point& b) {
+  const Point ab = b - a;
+  const double length2 = ab.sqrnorm();
+  const double t = length2 > 0.0 ? std::clamp(OpenMesh::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
+
+double loop_gap(const std::vector<Point>& a, const std::vector<Point>& b) {
+  double gap = INFINITY;
+  for (const auto& p : a) {
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      gap = std::min(gap, distance_to_segment(p, b[j], b[(j + 1) % b.size()]));
+    }
+  }
+  return gap;
+}
+
+// The smallest distance from a point of `points` to an edge of `outline`.
+double outline_clearance(const std::vector<Point2>& points, const std::vector<Point2>& outline) {
+  auto lift = [](const Point2& p) { return Point(p.x, p.y, 0.0); };
+  double clearance = INFINITY;
+  for (const auto& p : points) {
+    for (std::size_t j = 0; j < outline.size(); ++j) {
+      clearance = std::min(clearance, distance_to_segment(lift(p), lift(outline[j]),
+                                                          lift(outline[(j + 1) % outline.size()])));
+    }
+  }
+  return clearance;
+}
+
+struct Loop {
+  const Hole* hole;
+  std::vector<Point> points;
+  LoopPlane plane;
+  int component;
+};
+
+enum class Relation { None, Island, Touching };
+
+double touching_tolerance(const Loop& outer) {
+  return kTouchingFraction * outer.hole->mean_surrounding_edge_length;
+}
+
+// `outline` (a loop projected onto outer's plane, at `heights` from it) lies inside outer's
+// outline, clear of it, and within reach of the plane.
+bool lies_inside(const Loop& outer, const std::vector<Point2>& outline,
+                 const std::vector<double>& heights, const IslandOptions& options) {
+  const LoopPlane& plane = outer.plane;
+  for (const double height : heights) {
+    if (std::abs(height) > options.reach * plane.radius) return false;
+  }
+  // Clear of the outline, not on it: two stacked loops of the same shape are no island.
+  return outline_inside(outline, plane.outline) &&
+         outline_clearance(outline, plane.outline) > touching_tolerance(outer);
+}
+
+void project(const Loop& outer, const Loop& loop, std::vector<Point2>& outline,
+             std::vector<double>& heights) {
+  for (const auto& p : loop.points) {
+    outline.push_back(outer.plane.project(p));
+    heights.push_back(outer.plane.height(p));
+  }
+}
+
+// How loop `inner` relates to hole `outer` (see islands.h), leaving out the other loops of its
+// component.
+Relation relation(const Loop& outer, const Loop& inner, const IslandOptions& options) {
+  const LoopPlane& plane = outer.plane;
+  if (!(plane.area > 0.0)) return Relation::None;
+  if ((inner.hole->centroid - plane.centroid).norm() > (1.0 + options.reach) * plane.radius) {
+    return Relation::None;
+  }
+  std::vector<Point2> outline;
+  std::vector<double> heights;
+  project(outer, inner, outline, heights);
+  if (!(signed_area(outline) < 0.0)) return Relation::None;
+  const auto inside_count = std::count_if(
+      outline.begin(), outline.end(), [&](const Point2& p) { return inside(p, plane.outline); });
+  if (2 * static_cast<std::size_t>(inside_count) < outline.size()) return Relation::None;
+  const std::unordered_set<int> outer_vertices = [&] {
+    std::unordered_set<int> ids;
+    for (const auto v : outer.hole->vertices) ids.insert(v.idx());
+    return ids;
+  }();
+  const bool shares_vertex =
+      std::any_of(inner.hole->vertices.begin(), inner.hole->vertices.end(),
+                  [&](VertexHandle v) { return outer_vertices.count(v.idx()); });
+  if (shares_vertex) return Relation::Touching;
+  if (inner.component == outer.component) return Relation::None;
+  if (loop_gap(inner.points, outer.points) <= touching_tolerance(outer)) return Relation::Touching;
+  return lies_inside(outer, outline, heights, options) ? Relation::Island : Relation::None;
+}
+
+// Every other loop of the island's piece lies inside `outer` too: the whole piece floats in the
+// hole (a sheet stacked under another is no island of its border).
+bool whole_piece_inside(const Loop& outer, const std::vector<Loop>& loops, std::size_t island,
+                        const IslandOptions& options) {
+  for (std::size_t j = 0; j < loops.size(); ++j) {
+    if (j == island || loops[j].component != loops[island].component) continue;
+    std::vector<Point2> outline;
+    std::vector<double> heights;
+    project(outer, loops[j], outline, heights);
+    if (!lies_inside(outer, outline, heights, options)) return false;
+  }
+  return true;
+}
+
+void add_problem(IslandMap& map, int hole, const std::string& problem) {
+  if (map.problem[hole].empty()) map.problem[hole] = problem;
+}
+
+std::string id_list(const std::vector<int>& ids) {
+  std::string text;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    text += (i == 0 ? "" : i + 1 == ids.size() ? " and " : ", ") + std::to_string(ids[i]);
+  }
+  return text;
+}
+
+// Gives island `island` to the innermost of `containers`, or records why it cannot be given.
+void assign(IslandMap& map, const std::vector<Loop>& loops, int island,
+            std::vector<int> containers) {
+  std::sort(containers.begin(), containers.end(),
+            [&](int a, int b) { return loops[a].plane.area < loops[b].plane.area; });
+  const Loop& innermost = loops[containers[0]];
+  const bool nested = std::all_of(containers.begin() + 1, containers.end(), [&](int other) {
+    std::vector<Point2> outline;
+    for (const auto& p : innermost.points) outline.push_back(loops[other].plane.project(p));
+    return outline_inside(outline, loops[other].plane.outline);
+  });
+  if (nested) {
+    map.outer[island] = containers[0];
+    map.islands[containers[0]].push_back(island);
+    return;
+  }
+  std::sort(containers.begin(), containers.end());
+  const std::string problem = "hole " + std::to_string(island) + " lies inside holes " +
+                              id_list(containers) +
+                              " (an island of two holes): which one it belongs to is ambiguous; "
+                              "fill with --islands off, or choose the holes with --holes";
+  add_problem(map, island, problem);
+  for (const int outer : containers) add_problem(map, outer, problem);
+}
+
+}  // namespace
+
+IslandMap find_islands(const Mesh& mesh, const std::vector<Hole>& holes,
+                       const IslandOptions& options) {
+  IslandMap map;
+  map.islands.resize(holes.size());
+  map.outer.assign(holes.size(), -1);
+  map.problem.resize(holes.size());
+  if (!options.detect || holes.size() < 2) return map;
+  const std::vector<int> component = component_labels(mesh);
+  std::vector<Loop> loops;
+  for (const auto& hole : holes) {
+    Loop loop{&hole, loop_points(mesh, hole), {}, component[hole.vertices[0].idx()]};
+    loop.plane = loop_plane(loop.points, hole.centroid);
+    loops.push_back(std::move(loop));
+  }
+  std::vector<std::vector<int>> containers(holes.size());
+  for (std::size_t o = 0; o < loops.size(); ++o) {
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+      if (i == o) continue;
+      const Relation r = relation(loops[o], loops[i], options);
+      if (r == Relation::Island && whole_piece_inside(loops[o], loops, i, options)) {
+        containers[i].push_back(static_cast<int>(o));
+      }
+      if (r == Relation::Touching) {
+        const std::string problem = "hole " + std::to_string(i) + " lies inside hole " +
+                                    std::to_string(o) +
+                                    " but touches its boundary (an island touching the outer "
+                                    "loop): a patch between them would be pinched there";
+        add_problem(map, static_cast<int>(i), problem);
+        add_problem(map, static_cast<int>(o), problem);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    if (!containers[i].empty()) assign(map, loops, static_cast<int>(i), containers[i]);
+  }
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    const int outer = map.outer[i];
+    if (outer >= 0 && map.has_islands(static_cast<int>(i))) {
+      const std::string problem = "hole " + std::to_string(i) + " is an island of hole " +
+                                  std::to_string(outer) + " with islands of its own";
+      add_problem(map, static_cast<int>(i), problem);
+      add_problem(map, outer, problem);
+    }
+  }
+  return map;
+}
+
+}  // namespace holefill
