@@ -10,7 +10,7 @@
 // rather than refused: the header is what the exporter meant, and trailing bytes are a common
 // exporter habit (padding, signatures); the warning tells a user whose counts are wrong.
 // load_mesh refuses what a file's first 64 KiB rule out before reading the rest.
-// Writes are atomic (temporary file, then rename).
+// Writes are atomic (output_file.h).
 #pragma once
 
 #include <filesystem>
@@ -46,8 +46,9 @@ Mesh load_mesh(const std::filesystem::path& path, LoadReport* report = nullptr);
 Mesh load_mesh_from_memory(const std::string& bytes, const std::filesystem::path& name,
                            LoadReport* report = nullptr);
 
-// Writes OBJ, OFF or PLY (by extension) with full double precision. Either the whole file
-// appears at `path` or nothing changes there.
+// Writes OBJ, OFF or PLY (by extension) with full double precision, through write_output_file
+// (output_file.h): either the whole file appears at `path` or nothing changes there, links are
+// followed and permissions kept. Throws FileError saying why it could not be written.
 void save_mesh(const Mesh& mesh, const std::filesystem::path& path);
 
 // The file extensions load_mesh and save_mesh accept, lower case with the dot.

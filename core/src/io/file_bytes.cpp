@@ -4,9 +4,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <limits>
-#include <random>
 
 #include "text_scan.h"
 
@@ -66,36 +64,6 @@ FileStart read_file_start(const fs::path& path) {
   start.size = fs::file_size(path, ec);
   read_and_close(file, kFirstBytes, start.bytes, path);
   return start;
-}
-
-void write_file_atomically(const fs::path& path, const std::string& bytes) {
-  const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) fail(path, "folder does not exist");
-  if (fs::is_directory(path, ec)) fail(path, "is a directory");
-  std::random_device seed;
-  std::string temp_name = path.stem().string();
-  temp_name.insert(temp_name.begin(), '.');
-  temp_name += ".partial-" + std::to_string(seed()) + path.extension().string();
-  const fs::path temp = dir / temp_name;
-  bool written = false;
-  {
-    std::ofstream out(temp, std::ios::binary);
-    if (out) {
-      out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-      out.flush();
-      written = static_cast<bool>(out);
-    }
-  }
-  if (!written) {
-    fs::remove(temp, ec);
-    fail(path, "could not be written");
-  }
-  fs::rename(temp, path, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    fail(path, "could not be written (" + ec.message() + ")");
-  }
 }
 
 }  // namespace holefill::io

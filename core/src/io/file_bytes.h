@@ -1,5 +1,4 @@
-// Whole files in and out: the bytes a reader scans, and the one place a written file reaches the
-// disk (atomically).
+// Whole files in: the bytes a reader scans (outputs go through holefill/output_file.h).
 #pragma once
 
 #include <cstdint>
@@ -19,10 +18,5 @@ struct FileStart {
   std::uint64_t size = 0;
 };
 FileStart read_file_start(const std::filesystem::path& path);
-
-// Puts `bytes` at `path`: either the whole file appears there or nothing changes (a temporary
-// file in the same folder, then a rename). Throws FileError when the folder is missing, `path`
-// is a directory, or the write or rename fails.
-void write_file_atomically(const std::filesystem::path& path, const std::string& bytes);
 
 }  // namespace holefill::io

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "file_bytes.h"
+#include "holefill/output_file.h"
 #include "readers.h"
 #include "soup_to_mesh.h"
 #include "text_scan.h"
@@ -148,9 +149,9 @@ void save_mesh(const Mesh& mesh, const fs::path& path) {
   if (has_deleted_elements(mesh)) {
     Mesh compacted = mesh;
     compacted.garbage_collection();
-    io::write_file_atomically(path, io::mesh_file_bytes(compacted, ext));
+    write_output_file(path, io::mesh_file_bytes(compacted, ext));
   } else {
-    io::write_file_atomically(path, io::mesh_file_bytes(mesh, ext));
+    write_output_file(path, io::mesh_file_bytes(mesh, ext));
   }
 }
 

@@ -1,0 +1,42 @@
+// Writing an output file the way a careful command-line tool does: never a half-written file at
+// the output's name, never a user's file clobbered by accident, and a reason when it fails.
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+
+namespace holefill {
+
+// Puts `bytes` at `path`, so that a reader sees either the old file or the whole new one:
+// - a regular file (or none yet) is written to a temporary file in the same folder, then renamed
+//   over it; the temporary's name is unique, at most 255 bytes long, and the temporary is removed
+//   when the write fails (and on SIGINT, SIGTERM or SIGHUP once remove_partial_files_on_signals
+//   was called);
+// - symbolic links are followed: the file they lead to is replaced and the links are kept;
+// - an existing file keeps its permissions (and, where the process may, its owner);
+// - a file with other hard links is rewritten in place, so that every name keeps seeing it (after
+//   the bytes were written once to a temporary file, so that a full disk is found before the file
+//   is touched);
+// - an existing file that is not regular (a pipe, a terminal, /dev/stdout) is written directly.
+// Throws FileError naming `path` and why: the system's reason (no space left on device, read-only
+// file system, permission denied, name too long), a missing folder, a read-only file, a
+// directory, a loop of symbolic links. Nothing at `path` changes then, except a non-regular file
+// that was partly written.
+void write_output_file(const std::filesystem::path& path, std::string_view bytes);
+
+// Checks before any work that write_output_file(path, ...) can succeed, as far as can be known
+// without writing the bytes: the folder exists and accepts a new file, and `path` is not a
+// directory, a read-only file or a loop of symbolic links. Throws FileError as write_output_file
+// does; changes nothing.
+void check_output_file(const std::filesystem::path& path);
+
+// Whether `a` and `b` name the same file, through symbolic and hard links: the same device and
+// inode where both exist, the same resolved location where neither does. Never throws.
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove the temporary files that
+// write_output_file is writing, then end the process as the signal would have. Signals the
+// process ignores stay ignored. For programs: a library should not take its host's signals.
+void remove_partial_files_on_signals();
+
+}  // namespace holefill

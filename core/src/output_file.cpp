@@ -1,0 +1,155 @@
+#include "holefill/output_file.h"
+
+#include <fcntl.h>
+#include <limits.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <optional>
+
+#include "holefill/errors.h"
+#include "partial_file.h"
+
+namespace holefill {
+namespace fs = std::filesystem;
+namespace {
+
+[[noreturn]] void fail(const fs::path& path, const std::string& reason) {
+  throw FileError(path, reason);
+}
+
+[[noreturn]] void fail_with_errno(const fs::path& path, int error) {
+  fail(path, std::string("could not be written (") + std::strerror(error) + ")");
+}
+
+// Where `path` leads once every symbolic link on it is followed (links to missing files lead to
+// the missing file, which writing creates). Throws FileError on a loop.
+fs::path resolve_links(const fs::path& path) {
+  fs::path current = path;
+  for (int hops = 0; hops <= 40; ++hops) {  // Linux's own limit is 40
+    struct stat info {};
+    if (::lstat(current.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return current;
+    std::error_code ec;
+    const fs::path target = fs::read_symlink(current, ec);
+    if (ec) return current;  // unreadable link: open() will say why
+    current = target.is_absolute() ? target : current.parent_path() / target;
+  }
+  fail(path, "could not be written (a loop of symbolic links)");
+}
+
+fs::path folder_of(const fs::path& file) {
+  return file.has_parent_path() ? file.parent_path() : fs::path(".");
+}
+
+// The target's status when it exists; throws when it is a directory or read-only.
+std::optional<struct stat> existing_target(const fs::path& path, const fs::path& target) {
+  struct stat info {};
+  if (::stat(target.c_str(), &info) != 0) {
+    if (errno == ENOENT) return std::nullopt;
+    fail_with_errno(path, errno);
+  }
+  if (S_ISDIR(info.st_mode)) fail(path, "could not be written (it is a directory)");
+  const bool read_only = (info.st_mode & 0222) == 0 || ::access(target.c_str(), W_OK) != 0;
+  if (S_ISREG(info.st_mode) && read_only) {
+    fail(path, "could not be written (the file is read-only; holefill does not replace it)");
+  }
+  return info;
+}
+
+void check_name_length(const fs::path& path, const fs::path& target) {
+  if (target.filename().native().size() > NAME_MAX) {
+    fail(path, "could not be written (" + std::string(std::strerror(ENAMETOOLONG)) + ")");
+  }
+  struct stat folder {};
+  if (::stat(folder_of(target).c_str(), &folder) != 0) {
+    if (errno == ENOENT) fail(path, "could not be written (its folder does not exist)");
+    fail_with_errno(path, errno);
+  }
+  if (!S_ISDIR(folder.st_mode)) fail_with_errno(path, ENOTDIR);
+}
+
+void write_directly(const fs::path& path, const fs::path& target, std::string_view bytes) {
+  const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) fail_with_errno(path, errno);
+  int error = detail::write_all(fd, bytes.data(), bytes.size());
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error != 0) fail_with_errno(path, error);
+}
+
+// Writes the bytes to a fresh temporary file beside `target`, complete and on disk.
+void write_partial(detail::PartialFile& partial, const fs::path& path, std::string_view bytes,
+                   const std::optional<struct stat>& existing) {
+  const int fd = partial.descriptor();
+  int error = detail::write_all(fd, bytes.data(), bytes.size());
+  if (error == 0 && existing) {
+    if (::fchmod(fd, existing->st_mode & 07777) != 0) error = errno;
+    if (::fchown(fd, existing->st_uid, existing->st_gid) != 0) {
+    }  // only root may give files away
+  }
+  if (error == 0 && ::fsync(fd) != 0) error = errno;
+  if (const int closed = partial.close(); error == 0) error = closed;
+  if (error != 0) fail_with_errno(path, error);
+}
+
+// A file with several names is rewritten where it is, once the bytes were shown to fit on disk.
+void rewrite_in_place(const fs::path& path, const fs::path& target, std::string_view bytes) {
+  const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) fail_with_errno(path, errno);
+  int error = detail::write_all(fd, bytes.data(), bytes.size());
+  if (error == 0 && ::ftruncate(fd, static_cast<off_t>(bytes.size())) != 0) error = errno;
+  if (error == 0 && ::fsync(fd) != 0) error = errno;
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error != 0) fail_with_errno(path, error);
+}
+
+}  // namespace
+
+void write_output_file(const fs::path& path, std::string_view bytes) {
+  const fs::path target = resolve_links(path);
+  const auto existing = existing_target(path, target);
+  if (existing && !S_ISREG(existing->st_mode)) return write_directly(path, target, bytes);
+  check_name_length(path, target);
+  const bool has_other_names = existing && existing->st_nlink > 1;
+  {
+    detail::PartialFile partial(path, folder_of(target), 0666);
+    write_partial(partial, path, bytes, existing);
+    if (!has_other_names) {
+      if (::rename(partial.path().c_str(), target.c_str()) != 0) fail_with_errno(path, errno);
+      partial.renamed();
+      return;
+    }
+  }  // the temporary is removed: its space is free again for the rewrite
+  rewrite_in_place(path, target, bytes);
+}
+
+void check_output_file(const fs::path& path) {
+  const fs::path target = resolve_links(path);
+  const auto existing = existing_target(path, target);
+  if (existing && !S_ISREG(existing->st_mode)) return;
+  check_name_length(path, target);
+  detail::PartialFile probe(path, folder_of(target), 0600);  // can the folder take a new file?
+}
+
+bool same_file(const fs::path& a, const fs::path& b) {
+  struct stat first {
+  }, second{};
+  const bool a_exists = ::stat(a.c_str(), &first) == 0;
+  const bool b_exists = ::stat(b.c_str(), &second) == 0;
+  if (a_exists && b_exists) return first.st_dev == second.st_dev && first.st_ino == second.st_ino;
+  if (a_exists || b_exists) return false;
+  try {
+    std::error_code ec_a, ec_b;
+    const fs::path resolved_a = fs::weakly_canonical(fs::absolute(resolve_links(a)), ec_a);
+    const fs::path resolved_b = fs::weakly_canonical(fs::absolute(resolve_links(b)), ec_b);
+    return !ec_a && !ec_b && resolved_a == resolved_b;
+  } catch (const std::exception&) {
+    return false;  // a loop of links or an unreadable path: neither can be written anyway
+  }
+}
+
+void remove_partial_files_on_signals() { detail::install_partial_file_cleanup(); }
+
+}  // namespace holefill

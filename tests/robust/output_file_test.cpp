@@ -1,0 +1,189 @@
+// Writing outputs (holefill/output_file.h): links followed, modes kept, hard links kept together,
+// read-only files refused, non-regular files written directly, the system's reason on failure,
+// long names, and no temporary file left behind, even when a signal ends the process.
+#include "holefill/output_file.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <thread>
+
+#include "partial_file.h"
+#include "robust_test_util.h"
+
+namespace holefill {
+namespace {
+namespace fs = std::filesystem;
+using testing::ScratchTest;
+
+std::string contents(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::size_t files_in(const fs::path& dir) {
+  return static_cast<std::size_t>(
+      std::distance(fs::directory_iterator(dir), fs::directory_iterator{}));
+}
+
+std::string write_error(const fs::path& path, const std::string& bytes) {
+  try {
+    write_output_file(path, bytes);
+  } catch (const FileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+using OutputFile = ScratchTest;
+
+// A symbolic link was replaced by a regular file (as root, --report /dev/stdout replaced the
+// system's link).
+TEST_F(OutputFile, WritesThroughSymbolicLinksAndKeepsThem) {
+  const fs::path target = write("target.obj", "old");
+  fs::create_symlink("target.obj", dir_ / "link.obj");
+  fs::create_symlink(dir_ / "link.obj", dir_ / "link2.obj");
+  write_output_file(dir_ / "link2.obj", "new");
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.obj"));
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link2.obj"));
+  EXPECT_EQ(contents(target), "new");
+  EXPECT_EQ(files_in(dir_), 3u);
+}
+
+TEST_F(OutputFile, ADanglingLinkCreatesItsTarget) {
+  fs::create_symlink("made.obj", dir_ / "link.obj");
+  write_output_file(dir_ / "link.obj", "new");
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.obj"));
+  EXPECT_EQ(contents(dir_ / "made.obj"), "new");
+}
+
+// An existing 0600 file came back 0644.
+TEST_F(OutputFile, KeepsTheFilesPermissions) {
+  const fs::path file = write("private.obj", "old");
+  fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write);
+  write_output_file(file, "new");
+  EXPECT_EQ(fs::status(file).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write);
+  EXPECT_EQ(contents(file), "new");
+}
+
+TEST_F(OutputFile, ANewFileGetsTheUmasksPermissions) {
+  const mode_t mask = ::umask(022);
+  write_output_file(dir_ / "new.obj", "new");
+  ::umask(mask);
+  EXPECT_EQ(fs::status(dir_ / "new.obj").permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                fs::perms::others_read);
+}
+
+// A read-only file was overwritten (also as root, who may write anything).
+TEST_F(OutputFile, RefusesAReadOnlyFile) {
+  const fs::path file = write("locked.obj", "old");
+  fs::permissions(file, fs::perms::owner_read | fs::perms::group_read);
+  EXPECT_NE(write_error(file, "new").find("read-only"), std::string::npos);
+  EXPECT_THROW(check_output_file(file), FileError);
+  EXPECT_EQ(contents(file), "old");
+  EXPECT_EQ(files_in(dir_), 1u);
+}
+
+// A hard link was split: the other name kept the old contents.
+TEST_F(OutputFile, KeepsHardLinksTogether) {
+  const fs::path file = write("a.obj", "the old, longer contents");
+  fs::create_hard_link(file, dir_ / "b.obj");
+  write_output_file(file, "new");
+  EXPECT_EQ(contents(dir_ / "b.obj"), "new");
+  EXPECT_EQ(fs::hard_link_count(file), 2u);
+  EXPECT_EQ(files_in(dir_), 2u);
+}
+
+TEST_F(OutputFile, WritesAPipeDirectly) {
+  const fs::path fifo = dir_ / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  fs::create_symlink(fifo, dir_ / "pipe.obj");
+  std::string received;
+  std::thread reader([&] { received = contents(fifo); });
+  check_output_file(dir_ / "pipe.obj");
+  write_output_file(dir_ / "pipe.obj", "through the pipe");
+  reader.join();
+  EXPECT_EQ(received, "through the pipe");
+  EXPECT_EQ(fs::status(fifo).type(), fs::file_type::fifo);
+}
+
+// "could not be written" never said why.
+TEST_F(OutputFile, SaysWhyItFailed) {
+  fs::create_symlink("/dev/full", dir_ / "full.obj");
+  EXPECT_NE(write_error(dir_ / "full.obj", "bytes").find("No space left on device"),
+            std::string::npos);
+  EXPECT_NE(write_error(dir_ / "no" / "x.obj", "bytes").find("folder does not exist"),
+            std::string::npos);
+  write("file", "");
+  EXPECT_NE(write_error(dir_ / "file" / "x.obj", "bytes").find("Not a directory"),
+            std::string::npos);
+  fs::create_directory(dir_ / "dir.obj");
+  EXPECT_NE(write_error(dir_ / "dir.obj", "bytes").find("directory"), std::string::npos);
+  EXPECT_THROW(check_output_file(dir_ / "no" / "x.obj"), FileError);
+}
+
+TEST_F(OutputFile, ALoopOfLinksSaysSo) {
+  fs::create_symlink("b.obj", dir_ / "a.obj");
+  fs::create_symlink("a.obj", dir_ / "b.obj");
+  EXPECT_NE(write_error(dir_ / "a.obj", "bytes").find("loop of symbolic links"), std::string::npos);
+  EXPECT_THROW(check_output_file(dir_ / "a.obj"), FileError);
+}
+
+// Names of 236 to 255 bytes always failed: the temporary name went past 255.
+TEST_F(OutputFile, NamesUpToTheSystemsLimitWork) {
+  for (const std::size_t length : {236u, 250u, 255u}) {
+    const fs::path file = dir_ / (std::string(length - 4, 'n') + ".obj");
+    check_output_file(file);
+    write_output_file(file, "long");
+    EXPECT_EQ(contents(file), "long") << length;
+  }
+  EXPECT_NE(write_error(dir_ / (std::string(256, 'n')), "x").find("too long"), std::string::npos);
+}
+
+// The report's temporary had a fixed name (REPORT.partial): a user's file of that name was
+// consumed.
+TEST_F(OutputFile, LeavesOtherFilesAloneAndNoTemporaryBehind) {
+  write("r.json.partial", "mine");
+  write("r.json", "old");
+  write_output_file(dir_ / "r.json", "new");
+  EXPECT_EQ(contents(dir_ / "r.json.partial"), "mine");
+  EXPECT_EQ(contents(dir_ / "r.json"), "new");
+  EXPECT_EQ(files_in(dir_), 2u);
+}
+
+TEST_F(OutputFile, SameFileComparesIdentityNotText) {
+  const fs::path file = write("m.obj", "x");
+  fs::create_symlink("m.obj", dir_ / "link.obj");
+  fs::create_hard_link(file, dir_ / "hard.obj");
+  EXPECT_TRUE(same_file(file, dir_ / "link.obj"));
+  EXPECT_TRUE(same_file(file, dir_ / "hard.obj"));
+  EXPECT_TRUE(same_file(file, dir_ / "." / "m.obj"));
+  EXPECT_TRUE(same_file(dir_ / "new.json", dir_ / "sub" / ".." / "new.json"));
+  fs::create_symlink("later.json", dir_ / "dangling.json");
+  EXPECT_TRUE(same_file(dir_ / "dangling.json", dir_ / "later.json"));
+  EXPECT_FALSE(same_file(file, dir_ / "new.json"));
+  EXPECT_FALSE(same_file(dir_ / "a.json", dir_ / "b.json"));
+}
+
+// Interrupted writes left `.OUT.partial-N.ext` files (26 MB in one test).
+TEST_F(OutputFile, ASignalRemovesTheTemporaryFile) {
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    EXPECT_EXIT(
+        {
+          remove_partial_files_on_signals();
+          detail::PartialFile partial(dir_ / "out.obj", dir_, 0666);
+          if (!fs::exists(partial.path())) std::exit(1);
+          std::raise(signal);
+        },
+        ::testing::KilledBySignal(signal), "");
+    EXPECT_EQ(files_in(dir_), 0u) << signal;
+  }
+}
+
+}  // namespace
+}  // namespace holefill
