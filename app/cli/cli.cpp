@@ -2,12 +2,15 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cerrno>
 #include <new>
 #include <ostream>
+#include <sstream>
 
 #include "commands.h"
 #include "holefill/errors.h"
 #include "holefill/version.h"
+#include "outputs.h"
 
 namespace holefill::cli {
 namespace {
@@ -19,7 +22,7 @@ constexpr const char* kExitCodes =
     "Meshes are read from .obj .off .ply .stl and written as .obj .off .ply.\n"
     "Exit codes: 0 ok, 1 some holes not filled (output written), 2 usage error, 3 bad input,\n"
     "4 output not written, 5 every hole filled but some patch intersects the mesh,\n"
-    "6 internal error.";
+    "6 internal error, 7 out of memory (nothing written).";
 
 // Everything the command line can hold, alive while CLI11 parses into it.
 struct CommandLine {
@@ -27,7 +30,7 @@ struct CommandLine {
   CLI::App* info = nullptr;
   CLI::App* fill = nullptr;
   CLI::App* help = nullptr;
-  std::string info_input;
+  InfoArguments info_arguments;
   std::string help_topic;
   FillArguments fill_arguments;
   bool quiet = false;
@@ -40,7 +43,9 @@ struct CommandLine {
     app.add_flag("-q,--quiet", quiet,
                  "print no table on stdout (warnings and errors still go to stderr)");
     info = app.add_subcommand("info", "vertices, faces, components and a table of holes");
-    info->add_option("MESH", info_input, "the mesh to describe")->required();
+    info->add_option("MESH", info_arguments.input, "the mesh to describe (-: stdin)")->required();
+    info->add_flag("--json", info_arguments.json, "print the counts and holes as JSON");
+    add_format_option(*info, info_arguments.format);
     fill = app.add_subcommand("fill", "fill holes, write the result, print a table");
     add_fill_options(*fill, fill_arguments);
     help = app.add_subcommand("help", "this text, or a command's options");
@@ -55,9 +60,9 @@ int usage_error(const std::string& message, std::ostream& err) {
   return kUsage;
 }
 
-int dispatch(CommandLine& line, std::ostream& out, std::ostream& err) {
-  const Streams streams{out, err, line.verbosity()};
-  if (line.info->parsed()) return run_info(line.info_input, streams);
+int dispatch(CommandLine& line, const Streams& streams) {
+  std::ostream& out = streams.out;
+  if (line.info->parsed()) return run_info(line.info_arguments, streams);
   if (line.fill->parsed()) {
     finish_fill_options(line.fill_arguments);
     return run_fill(line.fill_arguments, streams);
@@ -70,33 +75,54 @@ int dispatch(CommandLine& line, std::ostream& out, std::ostream& err) {
   return kOk;
 }
 
+// Runs the parsed command, mapping what it throws to exit codes.
+int run_command(CommandLine& line, const Streams& streams) {
+  try {
+    return dispatch(line, streams);
+  } catch (const UsageError& e) {
+    return usage_error(e.what(), streams.err);
+  } catch (const FileError& e) {
+    streams.err << "holefill: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const std::bad_alloc&) {
+    streams.err << "holefill: out of memory; nothing was written\n";
+    return kOutOfMemory;
+  } catch (const std::exception& e) {
+    streams.err << "holefill: internal error: " << e.what() << " (please report it)\n";
+    return kInternalError;
+  }
+}
+
+// A standard output that could not be written (`info > /dev/full`, a closed pipe) fails the run.
+int check_stdout(int code, std::ostream& out, std::ostream& err) {
+  errno = 0;
+  out.flush();
+  if (out) return code;
+  err << "holefill: standard output could not be written" << last_system_error() << "\n";
+  return code == kOk || code == kSomeHolesNotFilled || code == kPatchesIntersect ? kWriteFailed
+                                                                                 : code;
+}
+
 }  // namespace
 
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int run(const std::vector<std::string>& args, std::istream& in, std::ostream& out,
+        std::ostream& err) {
   CommandLine line;
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
   try {
     line.app.parse(reversed);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
-      return line.app.exit(e, out, err);  // --help, --version
+      return check_stdout(line.app.exit(e, out, err), out, err);  // --help, --version
     }
     return usage_error(e.what(), err);
   }
-  try {
-    return dispatch(line, out, err);
-  } catch (const UsageError& e) {
-    return usage_error(e.what(), err);
-  } catch (const FileError& e) {
-    err << "holefill: " << e.what() << "\n";
-    return kBadInput;
-  } catch (const std::bad_alloc&) {
-    err << "holefill: out of memory\n";
-    return kBadInput;
-  } catch (const std::exception& e) {
-    err << "holefill: internal error: " << e.what() << " (please report it)\n";
-    return kInternalError;
-  }
+  return check_stdout(run_command(line, Streams{in, out, err, line.verbosity()}), out, err);
+}
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  std::istringstream nothing;
+  return run(args, nothing, out, err);
 }
 
 }  // namespace holefill::cli

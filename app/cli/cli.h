@@ -18,9 +18,15 @@ enum ExitCode : int {
   kPatchesIntersect = 5,    // output written, every selected hole filled, but some patch
                             // intersects the mesh (the report names the holes)
   kInternalError = 6,       // an unexpected error inside holefill (a bug: please report it)
+  kOutOfMemory = 7,         // memory ran out; no output was written
 };
 
-// Runs `holefill ARGS...` (args excludes the program name); returns the exit code.
+// Runs `holefill ARGS...` (args excludes the program name) with `in` as standard input (read
+// for a MESH of "-"); returns the exit code. A failure to write `out` is reported on `err` after
+// the files are written, and turns a successful run's code into kWriteFailed.
+int run(const std::vector<std::string>& args, std::istream& in, std::ostream& out,
+        std::ostream& err);
+// The same with no standard input (a MESH of "-" then reads nothing).
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 }  // namespace holefill::cli

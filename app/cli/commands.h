@@ -20,12 +20,19 @@ struct UsageError : std::runtime_error {
 enum class Verbosity { Quiet, Normal };
 
 struct Streams {
+  std::istream& in;
   std::ostream& out;
   std::ostream& err;
   Verbosity verbosity = Verbosity::Normal;
 };
 
-int run_info(const std::string& input, const Streams& streams);
+struct InfoArguments {
+  std::string input;
+  std::string format;  // of standard input, for an input of "-"
+  bool json = false;
+};
+
+int run_info(const InfoArguments& arguments, const Streams& streams);
 int run_fill(FillArguments& arguments, const Streams& streams);
 
 }  // namespace holefill::cli

@@ -110,13 +110,22 @@ void add_selection_options(CLI::App& command, FillArguments& a) {
 
 }  // namespace
 
+void add_format_option(CLI::App& command, std::string& format) {
+  command.add_option("--format", format, "the format of - (standard input or output)")
+      ->check(CLI::IsMember({"obj", "off", "ply", "stl"}));
+}
+
 void add_fill_options(CLI::App& command, FillArguments& a) {
   set_defaults(a);
   command.option_defaults()->always_capture_default();
-  command.add_option("MESH", a.input, "the mesh to fill (.obj .off .ply .stl)")->required();
-  command.add_option("-o,--output", a.output, "where to write the result (.obj .off .ply)")
+  command.add_option("MESH", a.input, "the mesh to fill (.obj .off .ply .stl; -: stdin)")
       ->required();
-  command.add_option("--report", a.report_path, "write per-hole statistics as JSON to this file");
+  command
+      .add_option("-o,--output", a.output, "where to write the result (.obj .off .ply; -: stdout)")
+      ->required();
+  add_format_option(command, a.format);
+  command.add_option("--report", a.report_path,
+                     "write per-hole statistics as JSON to this file (-: stdout)");
   add_triangulation_options(command, a);
   add_refinement_and_smoothing_options(command, a);
   add_selection_options(command, a);

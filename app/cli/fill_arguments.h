@@ -15,6 +15,7 @@ struct FillArguments {
   std::string input;
   std::string output;
   std::string report_path;
+  std::string format;                  // of "-" (standard input or output): obj, off, ply or stl
   std::vector<std::int64_t> hole_ids;  // as typed; checked against the mesh's holes later
   HoleSelection selection;             // max_boundary_edges; hole_ids once checked
   FillOptions options;
@@ -26,6 +27,9 @@ struct FillArguments {
 
 // Adds fill's options to `command`, writing into `arguments` (which must outlive the parse).
 void add_fill_options(CLI::App& command, FillArguments& arguments);
+
+// Adds --format, the format of a mesh read from standard input or written to standard output.
+void add_format_option(CLI::App& command, std::string& format);
 
 // Converts what the command line gave into `arguments.options` and `.selection` (after parsing).
 void finish_fill_options(FillArguments& arguments);

@@ -1,31 +1,17 @@
-// `holefill fill MESH -o OUT`: fill the selected holes, write the mesh, the table and the report.
-#include <algorithm>
-#include <filesystem>
-#include <fstream>
+// `holefill fill MESH -o OUT`: check the outputs, fill the selected holes, write the mesh and the
+// report, then print the table (after the files, so a closed stdout cannot cost them).
 #include <ostream>
-#include <sstream>
 
 #include "commands.h"
 #include "holefill/errors.h"
 #include "holefill/holes.h"
-#include "holefill/io.h"
 #include "mesh_input.h"
+#include "outputs.h"
 #include "report.h"
 #include "table.h"
 
 namespace holefill::cli {
 namespace {
-
-void check_output_format(const std::string& output) {
-  std::string ext = std::filesystem::path(output).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  const auto& writable = writable_extensions();
-  if (std::find(writable.begin(), writable.end(), ext) == writable.end()) {
-    throw UsageError("-o " + output + ": cannot write '" + ext +
-                     "' files (use .obj, .off or .ply)");
-  }
-}
 
 void select_holes(FillArguments& a, std::size_t hole_count) {
   for (const std::int64_t id : a.hole_ids) {
@@ -37,15 +23,19 @@ void select_holes(FillArguments& a, std::size_t hole_count) {
   }
 }
 
-// The notes and failures of each hole on stderr; returns (filled, intersecting) counts.
-std::pair<std::size_t, std::size_t> report_problems(const std::vector<HoleFill>& fills,
-                                                    const std::string& input, std::ostream& err) {
+struct FillCounts {
   std::size_t filled = 0, intersecting = 0;
+};
+
+// The notes and failures of each hole on stderr.
+FillCounts report_problems(const std::vector<HoleFill>& fills, const std::string& input,
+                           std::ostream& err) {
+  FillCounts counts;
   const std::string prefix = "holefill: " + input + ": hole ";
   for (const auto& fill : fills) {
-    if (!fill.failed()) ++filled;
+    if (!fill.failed()) ++counts.filled;
     if (fill.self_intersections > 0) {
-      ++intersecting;
+      ++counts.intersecting;
       err << prefix << fill.hole_id << ": the patch intersects the mesh ("
           << fill.self_intersections << " pairs of triangles)\n";
     }
@@ -55,30 +45,50 @@ std::pair<std::size_t, std::size_t> report_problems(const std::vector<HoleFill>&
       err << prefix << fill.hole_id << ": " << fill.smoothing_note << "\n";
     if (fill.failed()) err << prefix << fill.hole_id << " not filled: " << fill.failure << "\n";
   }
-  return {filled, intersecting};
+  return counts;
 }
 
-bool write_report(const ReportInput& report, const std::string& path, std::ostream& err) {
-  std::ostringstream json;
-  write_json_report(report, json);
-  const std::string temp = path + ".partial";
-  std::ofstream file(temp, std::ios::binary);
-  file << json.str();
-  file.close();
-  std::error_code ec;
-  if (!file || (std::filesystem::rename(temp, path, ec), ec)) {
-    std::filesystem::remove(temp, ec);
-    err << "holefill: " << path << ": the report could not be written\n";
+// Writes the mesh, then the report; says which one failed and what became of the other.
+bool write_results(const Mesh& mesh, const ReportInput& report, const FillArguments& a,
+                   const Streams& streams) {
+  try {
+    write_output(a.output, mesh_output_bytes(mesh, a), streams.out);
+  } catch (const FileError& e) {
+    streams.err << "holefill: " << e.what() << "; the filled mesh was not written"
+                << (a.report_path.empty() ? "" : ", nor the report") << "\n";
+    return false;
+  }
+  if (a.report_path.empty()) return true;
+  try {
+    write_output(a.report_path, json_report(report), streams.out);
+  } catch (const FileError& e) {
+    streams.err << "holefill: " << e.what()
+                << "; the report was not written (the filled mesh was, to " << a.output << ")\n";
     return false;
   }
   return true;
 }
 
+void print_summary(const std::vector<HoleFill>& fills, const FillCounts& counts,
+                   const ReportInput& report, std::ostream& out) {
+  print_fill_table(fills, out);
+  out << report.input_path << ": filled " << counts.filled << " of " << fills.size()
+      << " selected holes (" << report.holes_before << " in all); " << report.holes_after
+      << " holes remain";
+  if (counts.intersecting) out << "; " << counts.intersecting << " patches intersect the mesh";
+  out << "\n";
+}
+
 }  // namespace
 
 int run_fill(FillArguments& a, const Streams& streams) {
-  check_output_format(a.output);
-  Mesh mesh = load_and_warn(a.input, streams);
+  try {
+    check_outputs(a);
+  } catch (const FileError& e) {
+    streams.err << "holefill: " << e.what() << "\n";
+    return kWriteFailed;
+  }
+  Mesh mesh = load_and_warn(a.input, a.format, streams);
   const auto holes = find_holes(mesh);
   select_holes(a, holes.size());
   ReportInput report;
@@ -95,25 +105,14 @@ int run_fill(FillArguments& a, const Streams& streams) {
   report.holes_after = find_holes(mesh).size();
   report.fills = &fills;
 
-  const auto [filled, intersecting] = report_problems(fills, a.input, streams.err);
+  const FillCounts counts = report_problems(fills, a.input, streams.err);
+  const bool written = write_results(mesh, report, a, streams);
   if (streams.verbosity != Verbosity::Quiet) {
-    print_fill_table(fills, streams.out);
-    streams.out << a.input << ": filled " << filled << " of " << fills.size() << " selected holes ("
-                << holes.size() << " in all); " << report.holes_after << " holes remain";
-    if (intersecting) streams.out << "; " << intersecting << " patches intersect the mesh";
-    streams.out << "\n";
+    print_summary(fills, counts, report, stdout_carries_a_file(a) ? streams.err : streams.out);
   }
-  try {
-    save_mesh(mesh, a.output);
-  } catch (const FileError& e) {
-    streams.err << "holefill: " << e.what() << "\n";
-    return kWriteFailed;
-  }
-  if (!a.report_path.empty() && !write_report(report, a.report_path, streams.err)) {
-    return kWriteFailed;
-  }
-  if (filled != fills.size()) return kSomeHolesNotFilled;
-  return intersecting ? kPatchesIntersect : kOk;
+  if (!written) return kWriteFailed;
+  if (counts.filled != fills.size()) return kSomeHolesNotFilled;
+  return counts.intersecting ? kPatchesIntersect : kOk;
 }
 
 }  // namespace holefill::cli

@@ -8,8 +8,10 @@
 
 namespace holefill::cli {
 
-// Loads `path`; prints each warning of the loader as "holefill: PATH: WARNING".
-// Throws FileError (exit kBadInput) when the file cannot be read as a mesh.
-Mesh load_and_warn(const std::string& path, const Streams& streams);
+// Loads `path`, or standard input (streams.in) when it is "-", read as `format` (obj, off, ply
+// or stl; required then). Prints each warning of the loader as "holefill: PATH: WARNING".
+// Throws FileError (exit kBadInput) when the bytes cannot be read as a mesh, UsageError when "-"
+// comes without a format.
+Mesh load_and_warn(const std::string& path, const std::string& format, const Streams& streams);
 
 }  // namespace holefill::cli

@@ -1,97 +1,92 @@
 #include "report.h"
 
 #include <cmath>
-#include <iomanip>
-#include <ostream>
+#include <nlohmann/json.hpp>
+
+#include "holefill/stats.h"
 
 namespace holefill::cli {
 namespace {
 
-std::string quoted(const std::string& text) {
-  std::string s = "\"";
-  for (const char c : text) {
-    switch (c) {
-      case '"':
-        s += "\\\"";
-        break;
-      case '\\':
-        s += "\\\\";
-        break;
-      case '\n':
-        s += "\\n";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buffer[8];
-          std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-          s += buffer;
-        } else {
-          s += c;
-        }
-    }
-  }
-  return s + "\"";
+using Json = nlohmann::ordered_json;  // keys in the order written, as a reader expects them
+
+std::string text_of(const Json& document) {
+  return document.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
-std::string number(double value) {
-  if (!std::isfinite(value)) return "null";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.9g", value);
-  return buffer;
+Json options_json(const FillOptions& o) {
+  return {{"weight", to_string(o.triangulate.weight)},
+          {"fold_limit_deg", o.triangulate.fold_limit * 180.0 / M_PI},
+          {"restricted_above", o.triangulate.restricted.above_edges},
+          {"tau", o.refine.tau},
+          {"remesh", o.refine.remesh},
+          {"smooth", o.smooth.method == SmoothMethod::Fair ? "fair" : "umbrella"},
+          {"fair_order", o.smooth.fair.order},
+          {"smooth_iterations", o.smooth.iterations},
+          {"smooth_step", o.smooth.step},
+          {"last_stage", to_string(o.last_stage)}};
 }
 
-void write_fill(const HoleFill& fill, std::ostream& out) {
+Json fill_json(const HoleFill& fill) {
   const PatchStats& s = fill.stats;
-  out << "    {\"hole\": " << fill.hole_id << ", \"boundary_edges\": " << fill.boundary_edges
-      << ", \"filled\": " << (fill.failed() ? "false" : "true")
-      << ", \"stage\": " << quoted(to_string(fill.stage()));
-  if (fill.failed()) out << ", \"failure\": " << quoted(fill.failure);
-  if (!fill.refinement_note.empty()) {
-    out << ", \"refinement_note\": " << quoted(fill.refinement_note);
-  }
-  if (!fill.smoothing_note.empty()) out << ", \"smoothing_note\": " << quoted(fill.smoothing_note);
-  out << ", \"self_intersections\": " << fill.self_intersections;
-  out << ",\n     \"new_vertices\": " << s.new_vertices << ", \"new_faces\": " << s.new_faces
-      << ", \"min_angle_deg\": " << number(s.min_angle_deg)
-      << ", \"mean_min_angle_deg\": " << number(s.mean_min_angle_deg)
-      << ", \"max_dihedral_deg\": " << number(s.max_dihedral_deg)
-      << ", \"area\": " << number(s.area) << ",\n     \"valence_histogram\": {";
-  bool first = true;
+  Json entry{{"hole", fill.hole_id},
+             {"boundary_edges", fill.boundary_edges},
+             {"filled", !fill.failed()},
+             {"stage", to_string(fill.stage())}};
+  if (fill.failed()) entry["failure"] = fill.failure;
+  if (!fill.refinement_note.empty()) entry["refinement_note"] = fill.refinement_note;
+  if (!fill.smoothing_note.empty()) entry["smoothing_note"] = fill.smoothing_note;
+  entry["self_intersections"] = fill.self_intersections;
+  entry["new_vertices"] = s.new_vertices;
+  entry["new_faces"] = s.new_faces;
+  entry["min_angle_deg"] = s.min_angle_deg;  // not finite (no triangle): dumped as null
+  entry["mean_min_angle_deg"] = s.mean_min_angle_deg;
+  entry["max_dihedral_deg"] = s.max_dihedral_deg;
+  entry["area"] = s.area;
+  Json histogram = Json::object();
   for (const auto& [valence, count] : s.valence_histogram) {
-    out << (first ? "" : ", ") << "\"" << valence << "\": " << count;
-    first = false;
+    histogram[std::to_string(valence)] = count;
   }
-  out << "},\n     \"seconds\": {\"triangulate\": " << number(fill.times.triangulate_seconds)
-      << ", \"refine\": " << number(fill.times.refine_seconds)
-      << ", \"smooth\": " << number(fill.times.smooth_seconds)
-      << ", \"checks\": " << number(fill.times.check_seconds) << "}}";
+  entry["valence_histogram"] = std::move(histogram);
+  entry["seconds"] = {{"triangulate", fill.times.triangulate_seconds},
+                      {"refine", fill.times.refine_seconds},
+                      {"smooth", fill.times.smooth_seconds},
+                      {"checks", fill.times.check_seconds}};
+  return entry;
 }
 
 }  // namespace
 
-void write_json_report(const ReportInput& in, std::ostream& out) {
-  const FillOptions& o = *in.options;
-  out << "{\n  \"input\": " << quoted(in.input_path)
-      << ",\n  \"output\": " << quoted(in.output_path)
-      << ",\n  \"options\": {\"weight\": " << quoted(to_string(o.triangulate.weight))
-      << ", \"fold_limit_deg\": " << number(o.triangulate.fold_limit * 180.0 / M_PI)
-      << ", \"restricted_above\": " << o.triangulate.restricted.above_edges
-      << ", \"tau\": " << number(o.refine.tau)
-      << ", \"remesh\": " << (o.refine.remesh ? "true" : "false")
-      << ", \"smooth\": " << quoted(o.smooth.method == SmoothMethod::Fair ? "fair" : "umbrella")
-      << ", \"fair_order\": " << o.smooth.fair.order
-      << ", \"smooth_iterations\": " << o.smooth.iterations
-      << ", \"smooth_step\": " << number(o.smooth.step)
-      << ", \"last_stage\": " << quoted(to_string(o.last_stage)) << "},\n"
-      << "  \"before\": {\"vertices\": " << in.vertices_before << ", \"faces\": " << in.faces_before
-      << ", \"holes\": " << in.holes_before << "},\n"
-      << "  \"after\": {\"vertices\": " << in.vertices_after << ", \"faces\": " << in.faces_after
-      << ", \"holes\": " << in.holes_after << "},\n  \"holes\": [\n";
-  for (std::size_t i = 0; i < in.fills->size(); ++i) {
-    write_fill((*in.fills)[i], out);
-    out << (i + 1 < in.fills->size() ? ",\n" : "\n");
+std::string json_report(const ReportInput& in) {
+  Json holes = Json::array();
+  for (const auto& fill : *in.fills) holes.push_back(fill_json(fill));
+  const Json document{
+      {"input", in.input_path},
+      {"output", in.output_path},
+      {"options", options_json(*in.options)},
+      {"before",
+       {{"vertices", in.vertices_before}, {"faces", in.faces_before}, {"holes", in.holes_before}}},
+      {"after",
+       {{"vertices", in.vertices_after}, {"faces", in.faces_after}, {"holes", in.holes_after}}},
+      {"holes", std::move(holes)}};
+  return text_of(document);
+}
+
+std::string json_info(const std::string& input_path, const Mesh& mesh,
+                      const std::vector<Hole>& holes) {
+  Json list = Json::array();
+  for (const auto& hole : holes) {
+    list.push_back({{"id", hole.id},
+                    {"boundary_edges", hole.size()},
+                    {"perimeter", hole.perimeter},
+                    {"pinched", hole.pinched}});
   }
-  out << "  ]\n}\n";
+  const Json document{{"input", input_path},
+                      {"vertices", mesh.n_vertices()},
+                      {"faces", mesh.n_faces()},
+                      {"components", connected_components(mesh)},
+                      {"holes", std::move(list)}};
+  return text_of(document);
 }
 
 }  // namespace holefill::cli

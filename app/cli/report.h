@@ -1,7 +1,8 @@
-// The JSON report of `holefill fill --report`: options, mesh counts and per-hole statistics.
+// The JSON `holefill` writes: the report of `fill --report` (options, mesh counts, per-hole
+// statistics) and `info --json`. Text that is not UTF-8 (a file name in another encoding) has
+// each invalid byte replaced by U+FFFD, so the document is always valid JSON.
 #pragma once
 
-#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,11 @@ struct ReportInput {
   const std::vector<HoleFill>* fills = nullptr;
 };
 
-void write_json_report(const ReportInput& input, std::ostream& out);
+// The report as a JSON document (ending in a newline).
+std::string json_report(const ReportInput& input);
+
+// What `holefill info --json` prints for `mesh` (read from `input_path`) and its holes.
+std::string json_info(const std::string& input_path, const Mesh& mesh,
+                      const std::vector<Hole>& holes);
 
 }  // namespace holefill::cli

@@ -19,12 +19,13 @@ void print_fill_table(const std::vector<HoleFill>& fills, std::ostream& out) {
     const auto& s = fill.stats;
     const double seconds = fill.times.triangulate_seconds + fill.times.refine_seconds +
                            fill.times.smooth_seconds + fill.times.check_seconds;
-    out << std::setw(6) << fill.hole_id << std::setw(10) << fill.boundary_edges << "  " << std::left
-        << std::setw(13) << (fill.failed() ? "FAILED" : to_string(fill.stage())) << std::right
-        << std::setw(7) << s.new_vertices << std::setw(8) << s.new_faces << std::setw(11)
-        << format("%.2f", s.min_angle_deg) << std::setw(14) << format("%.2f", s.max_dihedral_deg)
-        << std::setw(11) << fill.self_intersections << std::setw(10) << format("%.4f", seconds)
-        << "\n";
+    // A space between columns whatever the widths: huge values widen a row, never merge cells.
+    out << std::setw(6) << fill.hole_id << ' ' << std::setw(9) << fill.boundary_edges << "  "
+        << std::left << std::setw(13) << (fill.failed() ? "FAILED" : to_string(fill.stage()))
+        << std::right << ' ' << std::setw(6) << s.new_vertices << ' ' << std::setw(7) << s.new_faces
+        << ' ' << std::setw(10) << format("%.2f", s.min_angle_deg) << ' ' << std::setw(13)
+        << format("%.2f", s.max_dihedral_deg) << ' ' << std::setw(10) << fill.self_intersections
+        << ' ' << std::setw(9) << format("%.4f", seconds) << "\n";
   }
 }
 

@@ -40,6 +40,13 @@ fs::path resolve_links(const fs::path& path) {
   fail(path, "could not be written (a loop of symbolic links)");
 }
 
+// A pipe, terminal or device, reached through any links, /proc's included (/dev/stdout leads to
+// "pipe:[N]", which is no path): written directly, by its own name.
+bool is_special_file(const fs::path& path) {
+  struct stat info {};
+  return ::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode);
+}
+
 fs::path folder_of(const fs::path& file) {
   return file.has_parent_path() ? file.parent_path() : fs::path(".");
 }
@@ -108,9 +115,9 @@ void rewrite_in_place(const fs::path& path, const fs::path& target, std::string_
 }  // namespace
 
 void write_output_file(const fs::path& path, std::string_view bytes) {
+  if (is_special_file(path)) return write_directly(path, path, bytes);
   const fs::path target = resolve_links(path);
   const auto existing = existing_target(path, target);
-  if (existing && !S_ISREG(existing->st_mode)) return write_directly(path, target, bytes);
   check_name_length(path, target);
   const bool has_other_names = existing && existing->st_nlink > 1;
   {
@@ -126,9 +133,9 @@ void write_output_file(const fs::path& path, std::string_view bytes) {
 }
 
 void check_output_file(const fs::path& path) {
+  if (is_special_file(path)) return;
   const fs::path target = resolve_links(path);
-  const auto existing = existing_target(path, target);
-  if (existing && !S_ISREG(existing->st_mode)) return;
+  existing_target(path, target);  // throws for a directory or a read-only file
   check_name_length(path, target);
   detail::PartialFile probe(path, folder_of(target), 0600);  // can the folder take a new file?
 }

@@ -112,6 +112,20 @@ TEST_F(OutputFile, WritesAPipeDirectly) {
   EXPECT_EQ(fs::status(fifo).type(), fs::file_type::fifo);
 }
 
+// /dev/stdout leads through /proc/self/fd/1 to "pipe:[N]", which is not a path to follow.
+TEST_F(OutputFile, WritesThroughProcsDescriptorLinks) {
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  const fs::path descriptor = "/proc/self/fd/" + std::to_string(ends[1]);
+  check_output_file(descriptor);
+  write_output_file(descriptor, "to the pipe");
+  ::close(ends[1]);
+  char received[32] = {};
+  EXPECT_EQ(::read(ends[0], received, sizeof received), 11);
+  ::close(ends[0]);
+  EXPECT_EQ(std::string(received), "to the pipe");
+}
+
 // "could not be written" never said why.
 TEST_F(OutputFile, SaysWhyItFailed) {
   fs::create_symlink("/dev/full", dir_ / "full.obj");

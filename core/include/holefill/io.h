@@ -51,6 +51,11 @@ Mesh load_mesh_from_memory(const std::string& bytes, const std::filesystem::path
 // followed and permissions kept. Throws FileError saying why it could not be written.
 void save_mesh(const Mesh& mesh, const std::filesystem::path& path);
 
+// The bytes save_mesh writes for `mesh` in the format `name`'s extension says (.obj .off .ply),
+// for callers that send them elsewhere (standard output). Throws FileError naming `name` for
+// another extension.
+std::string mesh_to_bytes(const Mesh& mesh, const std::filesystem::path& name);
+
 // The file extensions load_mesh and save_mesh accept, lower case with the dot.
 const std::vector<std::string>& readable_extensions();
 const std::vector<std::string>& writable_extensions();

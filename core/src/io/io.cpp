@@ -139,20 +139,23 @@ Mesh load_mesh(const fs::path& path, LoadReport* report) {
   return load_mesh_from_memory(io::read_file_bytes(path), path, report);
 }
 
-void save_mesh(const Mesh& mesh, const fs::path& path) {
-  const std::string ext = lower_extension(path);
+std::string mesh_to_bytes(const Mesh& mesh, const fs::path& name) {
+  const std::string ext = lower_extension(name);
   const auto& writable = writable_extensions();
   if (std::find(writable.begin(), writable.end(), ext) == writable.end()) {
-    throw FileError(path, "cannot write '" + ext + "' files (use .obj, .off or .ply)");
+    throw FileError(name, "cannot write '" + ext + "' files (use .obj, .off or .ply)");
   }
   // Indices in the file must count live elements only.
   if (has_deleted_elements(mesh)) {
     Mesh compacted = mesh;
     compacted.garbage_collection();
-    write_output_file(path, io::mesh_file_bytes(compacted, ext));
-  } else {
-    write_output_file(path, io::mesh_file_bytes(mesh, ext));
+    return io::mesh_file_bytes(compacted, ext);
   }
+  return io::mesh_file_bytes(mesh, ext);
+}
+
+void save_mesh(const Mesh& mesh, const fs::path& path) {
+  write_output_file(path, mesh_to_bytes(mesh, path));
 }
 
 }  // namespace holefill

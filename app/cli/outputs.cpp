@@ -1,0 +1,79 @@
+#include "outputs.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <ostream>
+
+#include "holefill/errors.h"
+#include "holefill/io.h"
+#include "holefill/output_file.h"
+
+namespace holefill::cli {
+namespace {
+
+std::filesystem::path mesh_output_name(const FillArguments& a) {
+  return std::filesystem::path(a.output == "-" ? "<stdout>." + a.format : a.output);
+}
+
+void check_format(const FillArguments& a) {
+  if (a.output == "-" && a.format.empty()) {
+    throw UsageError("writing the mesh to standard output (-o -) needs --format");
+  }
+  std::string ext = mesh_output_name(a).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const auto& writable = writable_extensions();
+  if (std::find(writable.begin(), writable.end(), ext) == writable.end()) {
+    throw UsageError("-o " + a.output + ": cannot write '" + ext +
+                     "' files (use .obj, .off or .ply)");
+  }
+}
+
+void check_report_path(const FillArguments& a) {
+  const std::string& report = a.report_path;
+  if (report.empty()) return;
+  if (report == "-" && a.output == "-") {
+    throw UsageError("-o - and --report - would both go to standard output");
+  }
+  if (report == "-") return;
+  if (a.input != "-" && same_file(report, a.input)) {
+    throw UsageError("--report " + report + " is the input mesh " + a.input +
+                     "; holefill will not replace it with the report");
+  }
+  if (a.output != "-" && same_file(report, a.output)) {
+    throw UsageError("--report " + report + " is the same file as -o " + a.output);
+  }
+}
+
+}  // namespace
+
+std::string last_system_error() {
+  return errno ? std::string(" (") + std::strerror(errno) + ")" : std::string();
+}
+
+void check_outputs(const FillArguments& a) {
+  check_format(a);
+  check_report_path(a);
+  if (a.output != "-") check_output_file(a.output);
+  if (!a.report_path.empty() && a.report_path != "-") check_output_file(a.report_path);
+}
+
+void write_output(const std::string& path, const std::string& bytes, std::ostream& out) {
+  if (path != "-") return write_output_file(path, bytes);
+  errno = 0;
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.flush();
+  if (!out) throw FileError("standard output", "could not be written" + last_system_error());
+}
+
+std::string mesh_output_bytes(const Mesh& mesh, const FillArguments& a) {
+  return mesh_to_bytes(mesh, mesh_output_name(a));
+}
+
+bool stdout_carries_a_file(const FillArguments& a) {
+  return a.output == "-" || a.report_path == "-";
+}
+
+}  // namespace holefill::cli
