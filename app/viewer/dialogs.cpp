@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <initializer_list>
 #include <system_error>
 #include <utility>
@@ -156,6 +157,25 @@ void draw_file_modals(FileActions& files, BuiltinDialog& dialog, bool builtin,
       break;
   }
   if (files.dialog() && builtin) builtin_file_dialog(files, dialog, keys);
+}
+
+void draw_progress(Worker& worker, const FrameKeys& keys, float left, float right, float bottom) {
+  if (!worker.busy()) return;
+  const float width = std::min(420.0f, right - left - 20.0f);
+  ImGui::SetNextWindowPos(ImVec2(0.5f * (left + right), bottom - 20.0f), ImGuiCond_Always,
+                          ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowSize(ImVec2(width, 0.0f));
+  ImGui::Begin("##progress", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+  const bool cancelling = worker.cancelling();
+  ImGui::Text("%s%s  %.1f s", worker.label().c_str(), cancelling ? ": cancelling" : "...",
+              worker.seconds());
+  ImGui::ProgressBar(static_cast<float>(worker.fraction()), ImVec2(-1.0f, 0.0f));
+  ImGui::BeginDisabled(cancelling);
+  if (ImGui::Button("Cancel (Esc)") || keys.pressed(kKeyEscape)) worker.cancel();
+  ImGui::EndDisabled();
+  ImGui::End();
 }
 
 void draw_help(bool& showing, const FrameKeys& keys) {

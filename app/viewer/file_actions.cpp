@@ -18,12 +18,23 @@ bool writable(const std::string& extension) {
 
 bool FileActions::open_now(const std::filesystem::path& path) {
   if (!session_.open(path)) return false;
+  opened(path);
+  return true;
+}
+
+void FileActions::opened(const std::filesystem::path& path) {
   std::error_code error;
   opened_ = std::filesystem::absolute(path, error);
   if (error) opened_ = path;
   save_target_.reset();
   mesh_opened_ = true;
-  return true;
+}
+
+void FileActions::open_file_now_or_later(const std::filesystem::path& path) {
+  if (open_)
+    open_(path);
+  else
+    open_now(path);
 }
 
 void FileActions::open() { ask_or_do(Action::OpenDialog); }
@@ -56,7 +67,7 @@ void FileActions::dialog_closed(const std::optional<std::filesystem::path>& chos
     return;
   }
   if (request.kind == FileDialogRequest::Kind::Open) {
-    open_now(*chosen);
+    open_file_now_or_later(*chosen);
     return;
   }
   std::filesystem::path path = *chosen;
@@ -143,7 +154,7 @@ void FileActions::perform(Action action, const std::filesystem::path& path) {
           opened_.empty() ? std::filesystem::current_path() : opened_.parent_path()};
       break;
     case Action::OpenFile:
-      open_now(path);
+      open_file_now_or_later(path);
       break;
   }
 }

@@ -7,8 +7,10 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "file_dialog.h"
 #include "session.h"
@@ -25,6 +27,13 @@ class FileActions {
   // Opens `path` now, without asking (the mesh named on the command line). False, with the
   // session's notice saying why, when it cannot be read.
   bool open_now(const std::filesystem::path& path);
+  // From now on the Open dialog and dropped files call `open` instead of opening at once (the
+  // viewer reads files on a worker); it must call opened() once the session holds the mesh.
+  void open_with(std::function<void(const std::filesystem::path&)> open) {
+    open_ = std::move(open);
+  }
+  // The session now holds the mesh read from `path`: Save forgets its target.
+  void opened(const std::filesystem::path& path);
 
   // The user's requests. Each is ignored while a dialog or a question is showing.
   void open();                                        // the Open dialog
@@ -67,6 +76,7 @@ class FileActions {
   void perform(Action action, const std::filesystem::path& path);
   void write(const std::filesystem::path& path);
   void continue_pending();
+  void open_file_now_or_later(const std::filesystem::path& path);
 
   Session& session_;
   std::filesystem::path opened_;
@@ -78,6 +88,7 @@ class FileActions {
   std::filesystem::path pending_path_;
   bool quitting_ = false;
   bool mesh_opened_ = false;
+  std::function<void(const std::filesystem::path&)> open_;
 };
 
 }  // namespace holefill::viewer

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "background.h"
 #include "camera.h"
 #include "command_line.h"
 #include "dialogs.h"
@@ -24,6 +25,7 @@
 #include "screenshot.h"
 #include "session.h"
 #include "window.h"
+#include "worker.h"
 
 namespace hv = holefill::viewer;
 
@@ -106,8 +108,9 @@ class FileDialogs {
   hv::FileDialogRequest::Kind kind_ = hv::FileDialogRequest::Kind::Open;
 };
 
-// Carries out what the interaction handed over: file commands, help, screenshots, drops.
-void carry_out(const hv::Request& request, hv::FileActions& files, hv::UiState& ui) {
+// Carries out what the interaction handed over: file commands, fills, help, screenshots, drops.
+void carry_out(const hv::Request& request, hv::FileActions& files, hv::Session& session,
+               hv::Worker& worker, hv::UiState& ui) {
   if (!request.command) {
     files.open_file(request.path);
     return;
@@ -121,6 +124,13 @@ void carry_out(const hv::Request& request, hv::FileActions& files, hv::UiState& 
       break;
     case hv::Command::SaveAs:
       files.save_as();
+      break;
+    case hv::Command::FillSelected:
+      hv::start_fill(worker, session, session.fill_selected_request());
+      break;
+    case hv::Command::FillAll:
+      hv::start_fill(worker, session,
+                     session.fill_all_request(static_cast<std::size_t>(ui.fill_all_max_edges)));
       break;
     case hv::Command::Help:
       ui.show_help = true;
@@ -154,9 +164,14 @@ void save_screenshot(const hv::Renderer& renderer, const hv::Window& window,
 int run(const hv::CommandLine& command, const char* executable) {
   hv::Session session;
   hv::FileActions files(session);
+  hv::Worker worker;
   const auto mesh_path = command.mesh.empty() ? hv::default_mesh_path(executable) : command.mesh;
   const bool scripted = !command.screenshot.empty();
-  if (!files.open_now(mesh_path)) {
+  // A plain start reads the mesh on the worker, so the window shows at once with a progress
+  // bar; scripted actions need the mesh first.
+  const bool read_first = scripted || command.select_hole || command.fill_all || command.remesh ||
+                          command.fair || !command.save.empty();
+  if (read_first && !files.open_now(mesh_path)) {
     std::fprintf(stderr, "holefill-viewer: %s\n", session.notice().text.c_str());
     return 3;
   }
@@ -180,6 +195,11 @@ int run(const hv::CommandLine& command, const char* executable) {
   hv::Renderer renderer;
   hv::Camera camera;
   hv::Interaction interaction;
+  if (!read_first) hv::start_open(worker, session, files, mesh_path);
+  files.open_with([&](const std::filesystem::path& path) {
+    if (!hv::start_open(worker, session, files, path))
+      session.tell({"Busy: wait for the work in progress or cancel it.", true});
+  });
   hv::UiState ui;
   FileDialogs dialogs;
   hv::BuiltinDialog builtin_dialog;
@@ -200,22 +220,38 @@ int run(const hv::CommandLine& command, const char* executable) {
       files.quit();
     }
     if (files.quitting()) break;
+    if (worker.poll()) {
+      if (!worker.error().empty()) session.tell({worker.error(), true});
+      // A mesh named on the command line that cannot be read ends the program, as it does
+      // without a window.
+      if (files.opened_path().empty()) {
+        std::fprintf(stderr, "holefill-viewer: %s\n", session.notice().text.c_str());
+        status = 3;
+        break;
+      }
+    }
     const hv::SceneArea area = scene_area(window);
     camera.set_viewport(area.size);
     hv::FrameKeys keys;
     for (const auto& event : window.poll()) {
       if (event.kind == hv::InputEvent::Kind::Key) keys.keys.push_back(event.key);
+      // While the worker computes from the session, nothing else may change it: the keys
+      // (but F12) wait, the mouse still turns the view.
       interaction.handle(event, area, ImGui::GetIO().WantCaptureMouse || files.busy(),
-                         ImGui::GetIO().WantCaptureKeyboard || files.busy(), camera, session);
+                         ImGui::GetIO().WantCaptureKeyboard || files.busy() || worker.busy(),
+                         camera, session);
     }
-    for (const auto& request : interaction.take_requests()) carry_out(request, files, ui);
+    for (const auto& request : interaction.take_requests())
+      carry_out(request, files, session, worker, ui);
     dialogs.update(files);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     ImGui::BeginDisabled(files.busy() && !dialogs.builtin());
-    hv::draw_panels(session, files, ui, static_cast<float>(window.size().y));
+    hv::draw_panels(session, files, worker, ui, static_cast<float>(window.size().y));
     ImGui::EndDisabled();
+    hv::draw_progress(worker, keys, area.origin.x, area.origin.x + area.size.x,
+                      area.origin.y + area.size.y);
     hv::draw_file_modals(files, builtin_dialog, dialogs.builtin(), keys);
     hv::draw_help(ui.show_help, keys);
     ImGui::Render();

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "background.h"
 #include "palette.h"
 
 namespace holefill::viewer {
@@ -125,10 +126,23 @@ void hole_list(Session& session, UiState& ui) {
   if (ImGui::Button("Reset view")) ui.reset_view = true;
 }
 
+// What a slider did this frame: moved (show the value) and let go (apply it).
+struct SliderEdit {
+  bool moved = false;
+  bool released = false;
+  void after_item(bool changed) {
+    moved = moved || changed;
+    released = released || ImGui::IsItemDeactivatedAfterEdit();
+  }
+};
+
 // The tau slider with a tick at sqrt(2), where Liepa's default sits.
-bool tau_slider(float& tau) {
+bool tau_slider(float& tau, SliderEdit& edit) {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 70.0f);
-  const bool changed = ImGui::SliderFloat("##tau", &tau, 1.0f, 2.0f, "tau = %.3f");
+  edit.after_item(ImGui::SliderFloat("##tau", &tau, 1.0f, 2.0f, "tau = %.3f"));
+  tooltip(
+      "Refinement density: a triangle is split while its edges are longer than tau times the "
+      "boundary's scale. Smaller tau: denser patch. The tick is sqrt 2 (the paper's).");
   const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
   const float grab = ImGui::GetStyle().GrabMinSize;
   const float x = lo.x + grab * 0.5f + (kSqrt2 - 1.0f) * (hi.x - lo.x - grab);
@@ -141,12 +155,15 @@ bool tau_slider(float& tau) {
     tau = kSqrt2;
     return true;
   }
-  return changed;
+  return false;
 }
 
-void options_section(Session& session) {
-  FillOptions options = session.options();
+// Combos, checkboxes and buttons apply at once; sliders show their value while dragged and
+// apply it where the user lets go, so a drag re-runs the fill once, not at every step.
+void options_section(Session& session, UiState& ui) {
+  FillOptions options = ui.dragged_options.value_or(session.options());
   bool changed = false;
+  SliderEdit slider;
   const WeightKind kinds[] = {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area};
   ImGui::SetNextItemWidth(150.0f);
   if (ImGui::BeginCombo("weight", to_string(options.triangulate.weight).c_str())) {
@@ -159,10 +176,9 @@ void options_section(Session& session) {
     ImGui::EndCombo();
   }
   float tau = static_cast<float>(options.refine.tau);
-  if (tau_slider(tau)) {
+  changed |= tau_slider(tau, slider);
+  if (changed || slider.moved)
     options.refine.tau = std::abs(tau - kSqrt2) < 1e-6f ? std::sqrt(2.0) : tau;
-    changed = true;
-  }
   changed |= ImGui::Checkbox("remesh to valence 6", &options.refine.remesh);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
@@ -185,21 +201,27 @@ void options_section(Session& session) {
   }
   ImGui::BeginDisabled(fair);  // the umbrella operator's own settings
   ImGui::SetNextItemWidth(150.0f);
-  changed |= ImGui::SliderInt("smoothing iterations", &options.smooth.iterations, 0, 100);
+  slider.after_item(ImGui::SliderInt("smoothing iterations", &options.smooth.iterations, 0, 100));
+  tooltip("Umbrella smoothing: how many times each new vertex moves toward its neighbours' mean");
   float step = static_cast<float>(options.smooth.step);
   ImGui::SetNextItemWidth(150.0f);
-  if (ImGui::SliderFloat("smoothing step", &step, 0.05f, 1.0f, "%.2f")) {
-    options.smooth.step = step;
-    changed = true;
-  }
+  const bool stepped = ImGui::SliderFloat("smoothing step", &step, 0.05f, 1.0f, "%.2f");
+  slider.after_item(stepped);
+  tooltip("Umbrella smoothing: the share of the way toward the mean each iteration moves");
+  if (stepped) options.smooth.step = step;
   ImGui::EndDisabled();
-  if (changed) session.set_options(options);
+  if (changed || slider.released) {
+    ui.dragged_options.reset();
+    session.set_options(options);
+  } else if (slider.moved) {
+    ui.dragged_options = options;
+  }
 }
 
-void step_section(Session& session) {
+void step_section(Session& session, Worker& worker, UiState& ui) {
   const auto stage_button = [&](const char* label, Stage stage) {
     ImGui::BeginDisabled(!session.can_step(stage));
-    if (ImGui::Button(label)) session.step(stage);
+    if (ImGui::Button(label)) start_fill(worker, session, session.step_request(stage));
     ImGui::EndDisabled();
   };
   stage_button("Triangulate", Stage::Triangulated);
@@ -209,24 +231,42 @@ void step_section(Session& session) {
   stage_button("Smooth", Stage::Smoothed);
   ImGui::SameLine();
   ImGui::BeginDisabled(!session.next_stage());
-  if (ImGui::Button("Fill")) session.fill_selected();
+  if (ImGui::Button("Fill")) start_fill(worker, session, session.fill_selected_request());
   ImGui::EndDisabled();
-
-  if (ImGui::Button("Fill all holes")) session.fill_all();
+  tooltip("The selected hole's remaining stages (Shift+F)");
   ImGui::SameLine();
   const bool untouched =
       session.selected() < 0 || (session.fill(session.selected()).stage() == Stage::Original &&
                                  !session.fill(session.selected()).failed());
   ImGui::BeginDisabled(untouched);
   if (ImGui::Button("Reset hole")) session.reset_selected();
+  tooltip("Take the selected hole's patch out again (Delete)");
   ImGui::EndDisabled();
+
+  const auto limit = static_cast<std::size_t>(ui.fill_all_max_edges);
+  ImGui::BeginDisabled(!session.fill_all_request(limit));
+  if (ImGui::Button(limit ? "Fill holes up to" : "Fill all holes"))
+    start_fill(worker, session, session.fill_all_request(limit));
+  ImGui::EndDisabled();
+  tooltip(
+      "Every open hole's remaining stages, on a worker: Cancel leaves the mesh as it was "
+      "(Ctrl+F)");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90.0f);
+  if (ImGui::InputInt("edges##limit", &ui.fill_all_max_edges, 10, 100))
+    ui.fill_all_max_edges = std::max(ui.fill_all_max_edges, 0);
+  tooltip(
+      "Fill only holes of at most this many boundary edges (0: every hole), like the "
+      "command line's --max-boundary");
   ImGui::SameLine();
   ImGui::BeginDisabled(!session.can_undo());
   if (ImGui::Button("Undo")) session.undo();
+  tooltip("Ctrl+Z");
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(!session.can_redo());
   if (ImGui::Button("Redo")) session.redo();
+  tooltip("Ctrl+Y or Ctrl+Shift+Z");
   ImGui::EndDisabled();
 }
 
@@ -238,7 +278,9 @@ void statistics_section(Session& session) {
     ImGui::TextUnformatted("Valences of the patch's new vertices");
     histogram("##patch_valences", fill.stats.valence_histogram, 60.0f);
   } else {
-    ImGui::TextDisabled("Select a hole: click on or inside its outline, or in the list.");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("Select a hole: click on or inside its outline, or in the list.");
+    ImGui::PopStyleColor();
   }
   ImGui::Text("Valences of the whole mesh (%zu vertices)", session.mesh().n_vertices());
   histogram("##mesh_valences", session.mesh_valences(), 60.0f);
@@ -317,7 +359,8 @@ void display_section(UiState& ui) {
 
 }  // namespace
 
-void draw_panels(Session& session, FileActions& files, UiState& ui, float window_height) {
+void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& ui,
+                 float window_height) {
   ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, window_height));
   ImGui::Begin("holefill", nullptr,
@@ -326,8 +369,10 @@ void draw_panels(Session& session, FileActions& files, UiState& ui, float window
   ImGui::Separator();
   hole_list(session, ui);
   ImGui::Separator();
-  options_section(session);
-  step_section(session);
+  ImGui::BeginDisabled(worker.busy());
+  options_section(session, ui);
+  step_section(session, worker, ui);
+  ImGui::EndDisabled();
   ImGui::Separator();
   statistics_section(session);
   ImGui::Separator();

@@ -5,11 +5,13 @@
 // frame loop.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "display.h"
 #include "file_actions.h"
 #include "session.h"
+#include "worker.h"
 
 namespace holefill::viewer {
 
@@ -22,8 +24,13 @@ struct UiState {
   bool reset_view = false;
   bool take_screenshot = false;
   bool show_help = false;
+  // The options while a slider is dragged (applied where it is let go).
+  std::optional<FillOptions> dragged_options;
+  int fill_all_max_edges = 0;  // "Fill holes up to N edges"; 0: all
 };
 
-void draw_panels(Session& session, FileActions& files, UiState& ui, float window_height);
+// Fills run on `worker`; while it is busy the controls that change the session are disabled.
+void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& ui,
+                 float window_height);
 
 }  // namespace holefill::viewer

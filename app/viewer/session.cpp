@@ -1,12 +1,23 @@
 #include "session.h"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 
 #include "holefill/errors.h"
 #include "holefill/io.h"
 
 namespace holefill::viewer {
+namespace {
+
+// Versions are unique across sessions, so a renderer that drew one session notices when another
+// (a mesh opened on the worker) takes its place.
+std::uint64_t next_version() {
+  static std::atomic<std::uint64_t> last{0};
+  return ++last;
+}
+
+}  // namespace
 
 bool Session::open(const std::filesystem::path& path) {
   try {
@@ -82,36 +93,97 @@ std::optional<Stage> Session::next_stage() const {
   return static_cast<Stage>(static_cast<int>(fill.stage()) + 1);
 }
 
-bool Session::step(Stage stage) {
-  if (!can_step(stage)) return false;
-  remember();
-  return run_step(selected_);
+bool Session::step(Stage stage) { return run(step_request(stage)); }
+bool Session::fill_selected() { return run(fill_selected_request()); }
+bool Session::fill_all(std::size_t max_edges) { return run(fill_all_request(max_edges)); }
+
+bool Session::run(const std::optional<FillRequest>& request) {
+  if (!request) return false;
+  std::optional<FillResult> result = compute(*request);
+  const bool ran = request->one_stage ? result->mesh_changed : result->all_ran;
+  apply(std::move(*result));
+  return ran;
 }
 
-bool Session::fill_selected() {
-  if (!next_stage()) return false;
-  remember();
-  while (next_stage() && run_step(selected_)) {
+std::optional<FillRequest> Session::step_request(Stage stage) const {
+  if (!can_step(stage)) return std::nullopt;
+  return FillRequest{{selected_}, true, false, options_};
+}
+
+std::optional<FillRequest> Session::fill_selected_request() const {
+  if (!next_stage()) return std::nullopt;
+  return FillRequest{{selected_}, false, false, options_};
+}
+
+namespace {
+
+bool unfinished(const HoleFill& fill) { return !fill.failed() && fill.stage() != Stage::Smoothed; }
+
+// "Filled 406 of 416 holes; 10 refused; 2 intersect the mesh."
+Notice summary(const std::vector<int>& hole_ids, const std::vector<HoleFill>& fills) {
+  std::size_t filled = 0, refused = 0, intersecting = 0;
+  for (const int id : hole_ids) {
+    filled += fills[id].stage() == Stage::Smoothed;
+    refused += fills[id].failed();
+    intersecting += fills[id].self_intersections > 0;
   }
-  return !fills_[selected_].failed();
+  std::string text =
+      "Filled " + std::to_string(filled) + " of " + std::to_string(hole_ids.size()) + " holes";
+  if (refused) text += "; " + std::to_string(refused) + " refused (see the hole list)";
+  if (intersecting) text += "; " + std::to_string(intersecting) + " intersect the mesh";
+  return {text + ".", refused > 0};
 }
 
-bool Session::fill_all() {
-  const auto open = [this](int id) {
-    return !fills_[id].failed() && fills_[id].stage() != Stage::Smoothed;
-  };
-  bool any = false;
-  for (int id = 0; id < static_cast<int>(holes_.size()); ++id) any = any || open(id);
-  if (!any) return false;
-  remember();
-  bool all_filled = true;
-  for (int id = 0; id < static_cast<int>(holes_.size()); ++id) {
-    while (open(id) && run_step(id)) {
+}  // namespace
+
+std::optional<FillRequest> Session::fill_all_request(std::size_t max_edges) const {
+  FillRequest request{{}, false, true, options_};
+  for (const auto& hole : holes_) {
+    if (unfinished(fills_[hole.id]) && (max_edges == 0 || hole.size() <= max_edges))
+      request.hole_ids.push_back(hole.id);
+  }
+  if (request.hole_ids.empty()) return std::nullopt;
+  return request;
+}
+
+std::optional<FillResult> Session::compute(const FillRequest& request, Progress* progress) const {
+  FillResult result;
+  result.mesh = mesh_;
+  result.fills = fills_;
+  result.log = log_;
+  // Progress counts boundary edges, a rough measure of each hole's share of the work.
+  double total = 0.0, done = 0.0;
+  for (const int id : request.hole_ids) total += static_cast<double>(holes_[id].size());
+  for (const int id : request.hole_ids) {
+    if (progress && progress->cancelled()) return std::nullopt;
+    HoleFill& fill = result.fills[id];
+    while (unfinished(fill)) {
+      const bool ran = advance(result.mesh, holes_[id], fill, request.options);
+      // A failed stage is logged too, so that replay shows the same failure in the hole list.
+      if (ran || fill.failed()) result.log.push_back({id, request.options});
+      result.mesh_changed = result.mesh_changed || ran;
+      if (!ran || request.one_stage) break;
     }
-    all_filled = all_filled && !fills_[id].failed();
+    if (fill.failed()) {
+      result.all_ran = false;
+      result.notice = {"Hole " + std::to_string(id) + ": " + fill.failure, true};
+    }
+    done += static_cast<double>(holes_[id].size());
+    if (progress) progress->set_fraction(done / total);
   }
-  if (!all_filled) notice_ = {"Some holes could not be filled; see the hole list.", true};
-  return all_filled;
+  if (progress && progress->cancelled()) return std::nullopt;
+  if (request.summarise) result.notice = summary(request.hole_ids, result.fills);
+  return result;
+}
+
+void Session::apply(FillResult result) {
+  remember();
+  mesh_ = std::move(result.mesh);
+  fills_ = std::move(result.fills);
+  log_ = std::move(result.log);
+  if (result.mesh_changed) revised();
+  if (!result.notice.text.empty()) notice_ = std::move(result.notice);
+  changed();
 }
 
 bool Session::reset_selected() {
@@ -179,7 +251,7 @@ const Comparison* Session::comparison() {
     comparison_ = make_comparison(mesh, holes_[selected_], options_, compare_mode_,
                                   compare_triangulation_only_);
     comparison_stale_ = false;
-    ++comparison_version_;
+    comparison_version_ = next_version();
   }
   return &*comparison_;
 }
@@ -213,19 +285,6 @@ void Session::replay() {
   changed();
 }
 
-bool Session::run_step(int hole_id) {
-  const bool ran = advance(mesh_, holes_[hole_id], fills_[hole_id], options_);
-  // A failed stage is logged too, so that replay shows the same failure in the hole list;
-  // only a stage that ran changed the mesh (a failed one leaves it as it was).
-  if (ran || fills_[hole_id].failed()) log_.push_back({hole_id, options_});
-  if (ran) revised();
-  if (fills_[hole_id].failed()) {
-    notice_ = {"Hole " + std::to_string(hole_id) + ": " + fills_[hole_id].failure, true};
-  }
-  changed();
-  return ran;
-}
-
 bool Session::has_steps(int hole_id) const {
   return std::any_of(log_.begin(), log_.end(),
                      [hole_id](const FillStep& step) { return step.hole_id == hole_id; });
@@ -234,7 +293,7 @@ bool Session::has_steps(int hole_id) const {
 void Session::revised() { revision_ = ++last_revision_; }
 
 void Session::changed() {
-  ++mesh_version_;
+  mesh_version_ = next_version();
   comparison_stale_ = true;
 }
 

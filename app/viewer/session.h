@@ -19,6 +19,7 @@
 
 #include "comparison.h"
 #include "holefill/fill.h"
+#include "holefill/progress.h"
 
 namespace holefill::viewer {
 
@@ -30,6 +31,25 @@ struct FillStep {
 struct Notice {
   std::string text;
   bool error = false;
+};
+
+// Which holes a fill takes, in order, and how far: one stage, or every remaining stage.
+struct FillRequest {
+  std::vector<int> hole_ids;
+  bool one_stage = false;
+  bool summarise = false;  // say afterwards how many were filled, refused, intersecting
+  FillOptions options;
+};
+
+// What a fill made, computed apart from the session (Session::compute) and taken in as one
+// undoable action (Session::apply).
+struct FillResult {
+  Mesh mesh;
+  std::vector<HoleFill> fills;
+  std::vector<FillStep> log;
+  bool mesh_changed = false;  // some stage ran
+  bool all_ran = true;        // no stage failed
+  Notice notice;
 };
 
 class Session {
@@ -49,7 +69,8 @@ class Session {
   const Mesh& mesh() const { return mesh_; }
   const std::vector<Hole>& holes() const { return holes_; }
   const HoleFill& fill(int hole_id) const { return fills_.at(hole_id); }
-  // Incremented whenever mesh() changes, so a renderer knows when to upload it again.
+  // A new number whenever mesh() changes (unique across sessions), so a renderer knows when to
+  // upload it again.
   std::uint64_t mesh_version() const { return mesh_version_; }
   const Notice& notice() const { return notice_; }
   void clear_notice() { notice_ = {}; }
@@ -73,8 +94,21 @@ class Session {
   bool step(Stage stage);
   // Runs the selected hole's remaining stages.
   bool fill_selected();
-  // Runs every hole's remaining stages with the current options.
-  bool fill_all();
+  // Runs every hole's remaining stages with the current options (only holes of at most
+  // `max_edges` boundary edges when it is not 0) and says how many were filled.
+  bool fill_all(std::size_t max_edges = 0);
+
+  // The same three as requests, for running them elsewhere (nothing when there is nothing to
+  // do), then compute() and apply(): step(s) is apply(compute(*step_request(s))).
+  std::optional<FillRequest> step_request(Stage stage) const;
+  std::optional<FillRequest> fill_selected_request() const;
+  std::optional<FillRequest> fill_all_request(std::size_t max_edges = 0) const;
+  // Runs `request` on copies of the mesh, the fills and the log. It only reads the session, so
+  // it may run on another thread while nothing steps, undoes, resets or changes options.
+  // Checks `progress` between holes: nothing when cancelled (the session never changed).
+  std::optional<FillResult> compute(const FillRequest& request, Progress* progress = nullptr) const;
+  // Takes a computed result in, as one undoable action.
+  void apply(FillResult result);
   // Takes the selected hole's patch out again.
   bool reset_selected();
 
@@ -112,7 +146,7 @@ class Session {
   void remember();
   void restore(Snapshot snapshot);
   void replay();
-  bool run_step(int hole_id);
+  bool run(const std::optional<FillRequest>& request);
   bool has_steps(int hole_id) const;
   void changed();
   void revised();

@@ -19,6 +19,8 @@ constexpr Shortcut kShortcuts[] = {
     {Command::ResetHole, kKeyDelete, false, false, "Delete", "take the selected hole's patch out"},
     {Command::Frame, 'F', false, false, "F", "frame the selected hole (or the mesh)"},
     {Command::ResetView, 'R', false, false, "R", "reset the view"},
+    {Command::FillSelected, 'F', false, true, "Shift+F", "fill the selected hole (every stage)"},
+    {Command::FillAll, 'F', true, false, "Ctrl+F", "fill all holes (up to the edge limit)"},
     {Command::Help, kKeyF1, false, false, "F1", "this help"},
     {Command::Screenshot, kKeyF12, false, false, "F12", "save a screenshot"},
 };

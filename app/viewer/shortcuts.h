@@ -17,6 +17,8 @@ enum class Command {
   ResetHole,
   Frame,
   ResetView,
+  FillSelected,
+  FillAll,
   Help,
   Screenshot,
 };

@@ -190,7 +190,8 @@ HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
 }
 
 std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
-                                 const FillOptions& options, const HoleSelection& selection) {
+                                 const FillOptions& options, const HoleSelection& selection,
+                                 Progress* progress) {
   std::vector<LoopGroup> chosen;
   for (auto& group : group_loops(mesh, holes, find_islands(mesh, holes, options.islands),
                                  selection.bridges, options.join)) {
@@ -200,12 +201,18 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
   // largest holes first (holes come sorted by size), then add the patches one by one.
   std::vector<GroupPlan> plans(chosen.size());
   std::vector<double> plan_seconds(chosen.size(), 0.0);
-  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> next{0}, planned{0};
+  // Triangulating and adding each count for half of the reported progress.
+  const auto report = [&](std::size_t steps) {
+    if (progress) progress->set_fraction(0.5 * static_cast<double>(steps) / chosen.size());
+  };
+  const auto cancelled = [&] { return progress && progress->cancelled(); };
   auto worker = [&] {
-    for (std::size_t i = next++; i < chosen.size(); i = next++) {
+    for (std::size_t i = next++; i < chosen.size() && !cancelled(); i = next++) {
       plan_seconds[i] = timed([&] {
         plans[i] = plan_group(mesh, holes, chosen[i], options.triangulate, options.join);
       });
+      report(++planned);
     }
   };
   const unsigned threads =
@@ -214,13 +221,15 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
   for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();
   for (auto& thread : pool) thread.join();
+  if (cancelled()) return {};
 
   // Patches are checked against the faces near them; each finished patch joins those faces.
   detail::FaceGrid index = detail::FaceGrid::of_mesh(mesh);
   std::vector<HoleFill> fills;
-  for (std::size_t i = 0; i < chosen.size(); ++i) {
+  for (std::size_t i = 0; i < chosen.size() && !cancelled(); ++i) {
     HoleFill& fill =
         fills.emplace_back(fill_planned(mesh, plans[i].polygon, options, &plans[i].plan, &index));
+    report(chosen.size() + i + 1);
     fill.times.triangulate_seconds += plan_seconds[i];
     fill.boundary_edges = chosen[i].boundary_edges(holes);
     fill.joined_holes.assign(chosen[i].holes.begin() + 1, chosen[i].holes.end());

@@ -2,7 +2,8 @@
 # Drives the real holefill-viewer window with synthetic input (xdotool, and WM_DELETE_WINDOW
 # close requests as a window manager sends them) under the X server xvfb-run started.
 #   interactive.sh SCENARIO VIEWER CLOSE_REQUEST ASSETS WORKDIR
-# Scenarios: close-unsaved, close-saved, save-as, save-native, garbage-mesh, scripted-save. Exits non-zero with a message on
+# Scenarios: close-unsaved, close-saved, save-as, save-native, garbage-mesh, scripted-save,
+# fill-all, fill-all-cancel. Exits non-zero with a message on
 # the first expectation that does not hold.
 set -u
 scenario=$1 viewer=$2 close_request=$3 assets=$4 work=$5
@@ -31,7 +32,12 @@ exits_within() {
   [ "$status" = "$2" ] || fail "the viewer exited with $status, expected $2"
 }
 # Saves a screenshot (F12) as $1.png in the work folder, for people to look at.
-screenshot() { keys F12; mv holefill-screenshot.png "$1.png" || fail "F12 saved no screenshot"; }
+# Waits up to 5 s: a frame takes long under llvmpipe on a loaded machine.
+screenshot() {
+  keys F12
+  for _ in $(seq 50); do [ -f holefill-screenshot.png ] && break; sleep 0.1; done
+  mv holefill-screenshot.png "$1.png" || fail "F12 saved no screenshot"
+}
 title() { xdotool getwindowname "$window"; }
 faces() { grep -c '^f ' "$1"; }
 
@@ -89,6 +95,41 @@ save-native)
     fail "zenity did not propose bunny-filled.obj: $(cat zenity-args)"
   "$close_request" "$window"
   exits_within 5 0
+  ;;
+fill-all)
+  export HOLEFILL_FILE_DIALOG=builtin
+  start bunny.obj
+  keys ctrl+f
+  for _ in $(seq 100); do [ "$(title)" = "*bunny.obj - holefill viewer" ] && break; sleep 0.1; done
+  [ "$(title)" = "*bunny.obj - holefill viewer" ] || fail "Fill all changed nothing: '$(title)'"
+  screenshot fill-all-done
+  keys ctrl+s Return
+  [ "$(faces bunny-filled.obj)" -gt "$(faces bunny.obj)" ] || fail "the saved mesh is not filled"
+  "$close_request" "$window"
+  exits_within 5 0
+  ;;
+fill-all-cancel)
+  # Nine holes of 560 edges in a bumpy grid: long enough to cancel on any machine.
+  awk -v N=480 -v H=3 -v S=140 'BEGIN {
+    for (j = 0; j <= N; j++) for (i = 0; i <= N; i++)
+      printf "v %d %d %.6f\n", i, j, 3 * sin(i / 15.0) * sin(j / 17.0)
+    tile = N / H; m = (tile - S) / 2
+    for (j = 0; j < N; j++) for (i = 0; i < N; i++) {
+      ti = i % tile; tj = j % tile
+      if (ti >= m && ti < m + S && tj >= m && tj < m + S) continue
+      a = j * (N + 1) + i + 1; b = a + 1; c = a + N + 1; d = c + 1
+      print "f", a, b, d; print "f", a, d, c
+    }
+  }' > holes.obj
+  start holes.obj
+  for _ in $(seq 100); do [ "$(title)" = "holes.obj - holefill viewer" ] && break; sleep 0.1; done
+  keys ctrl+f
+  screenshot fill-all-progress  # the window draws (and takes screenshots) while it works
+  keys Escape
+  sleep 1
+  [ "$(title)" = "holes.obj - holefill viewer" ] || fail "Cancel left a change: '$(title)'"
+  "$close_request" "$window"  # nothing unsaved: quits at once
+  exits_within 10 0
   ;;
 garbage-mesh)
   # The same message as the in-app Open, and no window.

@@ -11,6 +11,7 @@
 #include "holefill/islands.h"
 #include "holefill/mesh.h"
 #include "holefill/patch.h"
+#include "holefill/progress.h"
 #include "holefill/refine.h"
 #include "holefill/smooth.h"
 #include "holefill/stats.h"
@@ -85,7 +86,11 @@ std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch);
 
 // Fills the selected holes of `holes` (as find_holes gave them for this mesh), in order, each
 // with its islands (options.islands) and the hole bridged to it (loop_groups.h).
+// With `progress`: reports the share of holes triangulated and added, and stops when cancelled:
+// before any patch is added when the cancel comes during the triangulations (mesh unchanged,
+// nothing returned), else before the next hole (the mesh holds exactly the returned fills).
 std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
-                                 const FillOptions& options, const HoleSelection& selection = {});
+                                 const FillOptions& options, const HoleSelection& selection = {},
+                                 Progress* progress = nullptr);
 
 }  // namespace holefill

@@ -1,0 +1,147 @@
+#include "worker.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <thread>
+
+#include "background.h"
+
+namespace holefill::viewer {
+namespace {
+
+const std::filesystem::path kAssets(HOLEFILL_TEST_ASSETS);
+
+// Polls until the job has ended, as the frame loop does.
+void wait(Worker& worker) {
+  while (!worker.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  EXPECT_FALSE(worker.busy());
+}
+
+bool same_points(const Mesh& a, const Mesh& b) {
+  if (a.n_vertices() != b.n_vertices() || a.n_faces() != b.n_faces()) return false;
+  for (const auto v : a.vertices()) {
+    if (a.point(v) != b.point(VertexHandle(v.idx()))) return false;
+  }
+  return true;
+}
+
+TEST(Worker, TheFinishingStepRunsOnThePollingThread) {
+  Worker worker;
+  std::thread::id finished_on;
+  ASSERT_TRUE(worker.start("job", [&](Progress& progress) -> Worker::Finish {
+    progress.set_fraction(1.0);
+    return [&] { finished_on = std::this_thread::get_id(); };
+  }));
+  EXPECT_TRUE(worker.busy());
+  EXPECT_FALSE(worker.start("second", [](Progress&) { return Worker::Finish{}; }));
+  wait(worker);
+  EXPECT_EQ(finished_on, std::this_thread::get_id());
+  EXPECT_DOUBLE_EQ(worker.fraction(), 1.0);
+}
+
+TEST(Worker, CancelDropsTheResult) {
+  Worker worker;
+  bool finished = false;
+  worker.start("until cancelled", [&](Progress& progress) -> Worker::Finish {
+    while (!progress.cancelled()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return [&] { finished = true; };
+  });
+  worker.cancel();
+  EXPECT_TRUE(worker.busy() || !finished);
+  wait(worker);
+  EXPECT_FALSE(finished);
+}
+
+TEST(Worker, AnExceptionBecomesTheError) {
+  Worker worker;
+  worker.start("throws", [](Progress&) -> Worker::Finish { throw std::runtime_error("boom"); });
+  wait(worker);
+  EXPECT_EQ(worker.error(), "boom");
+}
+
+TEST(Background, FillAllOnTheWorkerMakesTheSameMeshAsInline) {
+  Session inline_session, background_session;
+  ASSERT_TRUE(inline_session.open(kAssets / "bunny.obj"));
+  ASSERT_TRUE(background_session.open(kAssets / "bunny.obj"));
+  inline_session.fill_all();
+  Worker worker;
+  ASSERT_TRUE(start_fill(worker, background_session, background_session.fill_all_request()));
+  wait(worker);
+  EXPECT_TRUE(same_points(inline_session.mesh(), background_session.mesh()));
+  EXPECT_TRUE(background_session.modified());
+  EXPECT_EQ(background_session.notice().text, "Filled 3 of 3 holes.");
+  ASSERT_TRUE(background_session.undo());
+  EXPECT_EQ(background_session.mesh().n_faces(), 3130u);
+}
+
+TEST(Background, ACancelledFillLeavesTheSessionExactlyAsItWas) {
+  Session session;
+  ASSERT_TRUE(session.open(kAssets / "bunny.obj"));
+  session.select(2);
+  ASSERT_TRUE(session.step(Stage::Triangulated));
+  const Mesh before = session.mesh();
+  const auto log_size = session.log().size();
+  const std::uint64_t version = session.mesh_version();
+  Worker worker;
+  ASSERT_TRUE(start_fill(worker, session, session.fill_all_request()));
+  worker.cancel();
+  wait(worker);
+  EXPECT_TRUE(same_points(before, session.mesh()));
+  EXPECT_EQ(session.log().size(), log_size);
+  EXPECT_EQ(session.mesh_version(), version);
+  EXPECT_EQ(session.fill(0).stage(), Stage::Original);
+  ASSERT_TRUE(session.undo());  // the history is the one before the cancelled fill
+  EXPECT_FALSE(session.modified());
+}
+
+TEST(Background, ComputeStopsBetweenHolesWhenCancelled) {
+  Session session;
+  ASSERT_TRUE(session.open(kAssets / "bunny.obj"));
+  const auto request = session.fill_all_request();
+  ASSERT_TRUE(request);
+  int reports = 0;
+  Progress progress([&](double) {
+    ++reports;
+    progress.cancel();
+  });
+  EXPECT_FALSE(session.compute(*request, &progress));
+  EXPECT_EQ(reports, 1);  // stopped after the first hole
+  EXPECT_EQ(session.fill(0).stage(), Stage::Original);
+  EXPECT_FALSE(session.modified());
+}
+
+TEST(Background, FillAllUpToNEdgesLeavesTheLargerHoles) {
+  Session session;
+  ASSERT_TRUE(session.open(kAssets / "bunny.obj"));  // holes of 99, 37 and 28 edges
+  ASSERT_TRUE(session.fill_all(40));
+  EXPECT_EQ(session.fill(0).stage(), Stage::Original);
+  EXPECT_EQ(session.fill(1).stage(), Stage::Smoothed);
+  EXPECT_EQ(session.fill(2).stage(), Stage::Smoothed);
+  EXPECT_EQ(session.notice().text, "Filled 2 of 2 holes.");
+  EXPECT_FALSE(session.fill_all_request(20));
+}
+
+TEST(Background, OpeningOnTheWorkerReplacesTheSessionWhenRead) {
+  Session session;
+  FileActions files(session);
+  ASSERT_TRUE(files.open_now(kAssets / "bunny.obj"));
+  files.take_mesh_opened();
+  Worker worker;
+  ASSERT_TRUE(start_open(worker, session, files, kAssets / "no-such-file.obj"));
+  wait(worker);
+  EXPECT_EQ(session.name(), "bunny.obj");
+  EXPECT_TRUE(session.notice().error);
+  EXPECT_FALSE(files.take_mesh_opened());
+
+  ASSERT_TRUE(start_open(worker, session, files, kAssets / "torus.obj"));
+  EXPECT_EQ(session.name(), "bunny.obj");  // until the frame loop polls
+  wait(worker);
+  EXPECT_EQ(session.name(), "torus.obj");
+  EXPECT_TRUE(files.take_mesh_opened());
+  EXPECT_EQ(files.suggested_save_path(), kAssets / "torus-filled.obj");
+}
+
+}  // namespace
+}  // namespace holefill::viewer
