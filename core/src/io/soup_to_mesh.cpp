@@ -5,13 +5,12 @@
 #include <unordered_set>
 
 #include "holefill/triangulate.h"
+#include "mesh_from_triangles.h"
 
 namespace holefill::io {
 namespace fs = std::filesystem;
 
 namespace {
-
-using Triangle = std::array<int, 3>;
 
 // Polygons up to this many corners are triangulated by the max-min angle dynamic program (which
 // also keeps a non-convex polygon from folding over itself); larger ones as a fan.
@@ -89,41 +88,6 @@ std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles) {
   }
   triangles.resize(kept);
   return count;
-}
-
-// One triangle's use of an undirected edge.
-struct EdgeUse {
-  std::uint64_t edge;  // smaller vertex index in the high half
-  int triangle;
-  bool forward;  // runs from the smaller vertex index to the larger
-  bool operator<(const EdgeUse& other) const {
-    return edge != other.edge ? edge < other.edge : triangle < other.triangle;
-  }
-};
-
-std::vector<EdgeUse> edge_uses(const std::vector<Triangle>& triangles) {
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * triangles.size());
-  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
-    for (int c = 0; c < 3; ++c) {
-      const auto a = static_cast<std::uint32_t>(triangles[t][c]);
-      const auto b = static_cast<std::uint32_t>(triangles[t][(c + 1) % 3]);
-      uses.push_back({static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b), t, a < b});
-    }
-  }
-  std::sort(uses.begin(), uses.end());
-  return uses;
-}
-
-// Calls visit(first, last) for each run of uses of one edge.
-template <class Visit>
-void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
-    visit(i, j);
-    i = j;
-  }
 }
 
 // Flips triangles so that neighbours across every edge with exactly two triangles use it in
@@ -278,41 +242,6 @@ std::size_t split_closed_fans(std::vector<Triangle>& triangles, const std::vecto
     }
   }
   return copy_of_fan.size();
-}
-
-Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& triangles,
-              const std::vector<char>& detached, std::size_t original_vertices,
-              LoadReport& report) {
-  Mesh mesh;
-  mesh.reserve(positions.size(), triangles.size() * 3 / 2 + 3, triangles.size());
-  for (const auto& p : positions) mesh.add_vertex(p);
-  auto add = [&mesh](const Triangle& t) {
-    return mesh.add_face(VertexHandle(t[0]), VertexHandle(t[1]), VertexHandle(t[2])).is_valid();
-  };
-  std::vector<Triangle> refused;
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    if (detached[t] || !add(triangles[t])) refused.push_back(triangles[t]);
-  }
-  // A face refused in one order can fit once the rest of its fans are in.
-  for (std::size_t before = 0; !refused.empty() && refused.size() != before;) {
-    before = refused.size();
-    std::vector<Triangle> still;
-    for (const auto& t : refused) {
-      if (!add(t)) still.push_back(t);
-    }
-    refused = std::move(still);
-  }
-  // What still does not fit (an edge with a third face, a face turned against its neighbours)
-  // is kept, on its own copies of its corners, so no data is lost.
-  for (const auto& t : refused) {
-    mesh.add_face(mesh.add_vertex(positions[t[0]]), mesh.add_vertex(positions[t[1]]),
-                  mesh.add_vertex(positions[t[2]]));
-    ++report.faces_detached;
-  }
-  for (std::size_t v = 0; v < original_vertices; ++v) {
-    if (mesh.is_isolated(VertexHandle(static_cast<int>(v)))) ++report.isolated_vertices;
-  }
-  return mesh;
 }
 
 std::size_t count_duplicate_positions(const std::vector<Point>& positions) {

@@ -1,0 +1,137 @@
+#include "mesh_from_triangles.h"
+
+#include <algorithm>
+
+namespace holefill::io {
+
+std::vector<EdgeUse> edge_uses(const std::vector<Triangle>& triangles) {
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * triangles.size());
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    for (int c = 0; c < 3; ++c) {
+      const auto a = static_cast<std::uint32_t>(triangles[t][c]);
+      const auto b = static_cast<std::uint32_t>(triangles[t][(c + 1) % 3]);
+      uses.push_back({static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b), t, a < b});
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+  return uses;
+}
+
+namespace {
+
+// The corner of triangle `t` whose edge to the next corner is {a, b}.
+int corner_of_edge(const Triangle& t, int a, int b) {
+  for (int c = 0; c < 3; ++c) {
+    const int from = t[c], to = t[(c + 1) % 3];
+    if ((from == a && to == b) || (from == b && to == a)) return c;
+  }
+  return -1;
+}
+
+// At vertex x, the boundary halfedge leaving x on the same fan as the boundary halfedge
+// `incoming` that arrives at x: turns around x through the fan's faces.
+HalfedgeHandle fan_end(const Mesh& mesh, HalfedgeHandle incoming) {
+  HalfedgeHandle out = mesh.opposite_halfedge_handle(
+      mesh.prev_halfedge_handle(mesh.opposite_halfedge_handle(incoming)));
+  while (!mesh.is_boundary(out)) {
+    out = mesh.opposite_halfedge_handle(mesh.prev_halfedge_handle(out));
+  }
+  return out;
+}
+
+// Links the boundary halfedges: at each vertex, the boundary arriving at the end of one fan goes
+// on along the boundary leaving the next fan (in the order the fans were met), so a vertex where
+// open fans touch lies once per fan on one boundary loop, as OpenMesh's add_face links them.
+void link_boundaries(Mesh& mesh) {
+  struct Fan {
+    int vertex;
+    HalfedgeHandle in, out;
+  };
+  std::vector<Fan> fans;
+  for (const auto h : mesh.halfedges()) {
+    if (!mesh.is_boundary(h)) continue;
+    fans.push_back({mesh.to_vertex_handle(h).idx(), h, fan_end(mesh, h)});
+  }
+  std::stable_sort(fans.begin(), fans.end(),
+                   [](const Fan& a, const Fan& b) { return a.vertex < b.vertex; });
+  for (std::size_t i = 0; i < fans.size();) {
+    std::size_t j = i;
+    while (j < fans.size() && fans[j].vertex == fans[i].vertex) ++j;
+    for (std::size_t k = i; k < j; ++k) {
+      mesh.set_next_halfedge_handle(fans[k].in, fans[k + 1 < j ? k + 1 : i].out);
+    }
+    mesh.set_halfedge_handle(VertexHandle(fans[i].vertex), fans[i].out);
+    i = j;
+  }
+}
+
+// Adds the triangles' faces by building their half-edges directly: linear in the triangles,
+// where add_face circulates around each corner (quadratic around a vertex with many fans).
+// Preconditions (what the repairs guarantee): every edge is used at most twice, in opposite
+// directions, and a vertex has either one closed fan or only open ones.
+void add_triangles(Mesh& mesh, const std::vector<Triangle>& triangles) {
+  std::vector<HalfedgeHandle> halfedge(3 * triangles.size());  // corner c to corner c + 1
+  const std::vector<EdgeUse> uses = edge_uses(triangles);
+  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+    const int a = static_cast<int>(uses[i].edge >> 32);
+    const int b = static_cast<int>(uses[i].edge & 0xFFFFFFFFu);
+    const int t = uses[i].triangle;
+    const int c = corner_of_edge(triangles[t], a, b);
+    const HalfedgeHandle h =
+        mesh.new_edge(VertexHandle(triangles[t][c]), VertexHandle(triangles[t][(c + 1) % 3]));
+    halfedge[3 * t + c] = h;
+    if (j - i == 2) {
+      const int other = uses[i + 1].triangle;
+      halfedge[3 * other + corner_of_edge(triangles[other], a, b)] =
+          mesh.opposite_halfedge_handle(h);
+    }
+  });
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const FaceHandle f = mesh.new_face();
+    // As add_face does: the face circulators start at corner 0.
+    mesh.set_halfedge_handle(f, halfedge[3 * t + 2]);
+    for (int c = 0; c < 3; ++c) {
+      const HalfedgeHandle h = halfedge[3 * t + c];
+      mesh.set_face_handle(h, f);
+      mesh.set_next_halfedge_handle(h, halfedge[3 * t + (c + 1) % 3]);
+      mesh.set_halfedge_handle(mesh.from_vertex_handle(h), h);
+    }
+  }
+  link_boundaries(mesh);
+}
+
+}  // namespace
+
+// Faces that could not join the surface (an edge with a third face, a face turned against its
+// neighbours) are kept, on their own copies of their corners, so no data is lost.
+Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& triangles,
+              const std::vector<char>& detached, std::size_t original_vertices,
+              LoadReport& report) {
+  std::vector<Point> all_positions = positions;
+  std::vector<Triangle> kept, apart;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    if (!detached[t]) {
+      kept.push_back(triangles[t]);
+      continue;
+    }
+    Triangle copy;
+    for (int c = 0; c < 3; ++c) {
+      copy[c] = static_cast<int>(all_positions.size());
+      all_positions.push_back(positions[triangles[t][c]]);
+    }
+    apart.push_back(copy);
+  }
+  report.faces_detached = apart.size();
+  kept.insert(kept.end(), apart.begin(), apart.end());
+  Mesh mesh;
+  mesh.reserve(all_positions.size(), kept.size() * 3 / 2 + 3, kept.size());
+  for (const auto& p : all_positions) mesh.add_vertex(p);
+  add_triangles(mesh, kept);
+  for (std::size_t v = 0; v < original_vertices; ++v) {
+    if (mesh.is_isolated(VertexHandle(static_cast<int>(v)))) ++report.isolated_vertices;
+  }
+  return mesh;
+}
+
+}  // namespace holefill::io

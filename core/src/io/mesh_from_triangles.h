@@ -1,0 +1,47 @@
+// Triangles by vertex index, their edges, and the Mesh they make once the repairs (soup_to_mesh)
+// have made them consistent.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "holefill/io.h"
+
+namespace holefill::io {
+
+using Triangle = std::array<int, 3>;
+
+// One triangle's use of an undirected edge.
+struct EdgeUse {
+  std::uint64_t edge;  // smaller vertex index in the high half
+  int triangle;
+  bool forward;  // runs from the smaller vertex index to the larger
+  bool operator<(const EdgeUse& other) const {
+    return edge != other.edge ? edge < other.edge : triangle < other.triangle;
+  }
+};
+
+// Every use of an edge by a triangle, sorted by edge (then triangle).
+std::vector<EdgeUse> edge_uses(const std::vector<Triangle>& triangles);
+
+// Calls visit(first, last) for each run of uses of one edge.
+template <class Visit>
+void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
+    visit(i, j);
+    i = j;
+  }
+}
+
+// The mesh of `triangles` over `positions`. Triangles marked in `detached` are kept on their own
+// copies of their corners (appended after the positions); the others must be consistent: every
+// edge used at most twice, in opposite directions, and each vertex with one closed fan or only
+// open ones. Counts report.faces_detached and the first `original_vertices` vertices no face uses
+// (report.isolated_vertices). Linear in the triangles.
+Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& triangles,
+              const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report);
+
+}  // namespace holefill::io
