@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "face_grid.h"
+#include "holefill/attributes.h"
 #include "holefill/loop_groups.h"
 #include "patch_intersections.h"
 #include "stage_undo.h"
@@ -142,6 +143,7 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
     case Stage::Smoothed:
       return false;
   }
+  interpolate_patch_attributes(mesh, fill.patch);  // colours, normals, ... of the new elements
   fill.stats = patch_stats(mesh, fill.patch);
   return true;
 }

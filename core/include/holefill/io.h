@@ -36,9 +36,12 @@ struct LoadReport {
   std::vector<std::string> warnings;        // one sentence per kind of repair or oddity
 };
 
-// Loads a triangle mesh. The format is chosen by the file's contents where they are
-// unmistakable (a PLY or OFF header, a binary STL's size) and by its extension otherwise; a
-// file whose extension says otherwise is read by its contents, with a warning.
+// Loads a triangle mesh with the attributes its file carries (attributes.h): PLY's vertex and
+// face properties, OFF's colours and normals, OBJ's vertex colours; what cannot be kept (other
+// PLY elements and lists, OBJ's vt/vn/materials) is named in a warning. The format is chosen by
+// the file's contents where they are unmistakable (a PLY or OFF header, a binary STL's size) and
+// by its extension otherwise; a file whose extension says otherwise is read by its contents,
+// with a warning.
 Mesh load_mesh(const std::filesystem::path& path, LoadReport* report = nullptr);
 
 // Reads a mesh from bytes already in memory; `name` stands in for the path in errors and
@@ -46,13 +49,16 @@ Mesh load_mesh(const std::filesystem::path& path, LoadReport* report = nullptr);
 Mesh load_mesh_from_memory(const std::string& bytes, const std::filesystem::path& name,
                            LoadReport* report = nullptr);
 
-// Writes OBJ, OFF or PLY (by extension) with full double precision, through write_output_file
-// (output_file.h): either the whole file appears at `path` or nothing changes there, links are
-// followed and permissions kept. Throws FileError saying why it could not be written.
+// Writes OBJ, OFF, PLY or binary STL (by extension): numbers as the shortest text that reads back
+// to the same value, PLY in the encoding and property types it was read with and with every
+// attribute the mesh carries (attributes.h), OFF with its colours and normals, OBJ with vertex
+// colours; through write_output_file (output_file.h): either the whole file appears at `path` or
+// nothing changes there, links are followed and permissions kept. Throws FileError saying why it
+// could not be written.
 void save_mesh(const Mesh& mesh, const std::filesystem::path& path);
 
-// The bytes save_mesh writes for `mesh` in the format `name`'s extension says (.obj .off .ply),
-// for callers that send them elsewhere (standard output). Throws FileError naming `name` for
+// The bytes save_mesh writes for `mesh` in the format `name`'s extension says (.obj .off .ply
+// .stl), for callers that send them elsewhere (standard output). Throws FileError naming `name` for
 // another extension.
 std::string mesh_to_bytes(const Mesh& mesh, const std::filesystem::path& name);
 

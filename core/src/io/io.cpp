@@ -110,7 +110,7 @@ const std::vector<std::string>& readable_extensions() {
 }
 
 const std::vector<std::string>& writable_extensions() {
-  static const std::vector<std::string> extensions{".obj", ".off", ".ply"};
+  static const std::vector<std::string> extensions{".obj", ".off", ".ply", ".stl"};
   return extensions;
 }
 
@@ -143,7 +143,7 @@ std::string mesh_to_bytes(const Mesh& mesh, const fs::path& name) {
   const std::string ext = lower_extension(name);
   const auto& writable = writable_extensions();
   if (std::find(writable.begin(), writable.end(), ext) == writable.end()) {
-    throw FileError(name, "cannot write '" + ext + "' files (use .obj, .off or .ply)");
+    throw FileError(name, "cannot write '" + ext + "' files (use .obj, .off, .ply or .stl)");
   }
   // Indices in the file must count live elements only.
   if (has_deleted_elements(mesh)) {

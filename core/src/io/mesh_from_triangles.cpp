@@ -106,22 +106,30 @@ void add_triangles(Mesh& mesh, const std::vector<Triangle>& triangles) {
 // Faces that could not join the surface (an edge with a third face, a face turned against its
 // neighbours) are kept, on their own copies of their corners, so no data is lost.
 Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& triangles,
-              const std::vector<char>& detached, std::size_t original_vertices,
-              LoadReport& report) {
+              const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
+              MeshSources& sources) {
   std::vector<Point> all_positions = positions;
+  sources.vertex.resize(positions.size());
+  for (std::size_t v = 0; v < positions.size(); ++v) sources.vertex[v] = static_cast<int>(v);
   std::vector<Triangle> kept, apart;
+  std::vector<int> apart_source;
+  sources.face.clear();
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     if (!detached[t]) {
       kept.push_back(triangles[t]);
+      sources.face.push_back(static_cast<int>(t));
       continue;
     }
     Triangle copy;
     for (int c = 0; c < 3; ++c) {
       copy[c] = static_cast<int>(all_positions.size());
       all_positions.push_back(positions[triangles[t][c]]);
+      sources.vertex.push_back(triangles[t][c]);
     }
     apart.push_back(copy);
+    apart_source.push_back(static_cast<int>(t));
   }
+  sources.face.insert(sources.face.end(), apart_source.begin(), apart_source.end());
   report.faces_detached = apart.size();
   kept.insert(kept.end(), apart.begin(), apart.end());
   Mesh mesh;

@@ -36,12 +36,20 @@ void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
   }
 }
 
+// Where each element of an assembled mesh came from: the index of its input position (vertex)
+// or input triangle (face).
+struct MeshSources {
+  std::vector<int> vertex, face;
+};
+
 // The mesh of `triangles` over `positions`. Triangles marked in `detached` are kept on their own
 // copies of their corners (appended after the positions); the others must be consistent: every
 // edge used at most twice, in opposite directions, and each vertex with one closed fan or only
 // open ones. Counts report.faces_detached and the first `original_vertices` vertices no face uses
-// (report.isolated_vertices). Linear in the triangles.
+// (report.isolated_vertices), and says in `sources` where each element came from. Linear in the
+// triangles.
 Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& triangles,
-              const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report);
+              const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
+              MeshSources& sources);
 
 }  // namespace holefill::io

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstring>
+#include <set>
 #include <string>
 
 #include "readers.h"
@@ -15,6 +16,23 @@ bool continues(std::string_view line) {
   return !line.empty() && line.back() == '\\' && line.find('#') == std::string_view::npos;
 }
 
+// The common "v x y z r g b" extension: colours in [0, 1] as vertex attributes, from the first
+// vertex that has them (vertices without get 0).
+void read_vertex_colour(std::string_view rest, Soup& soup) {
+  double rgb[3];
+  for (double& channel : rgb) {
+    if (!parse_double(take_token(rest), channel)) return;
+  }
+  if (soup.layout.vertex.empty()) {
+    for (const char* name : {"red", "green", "blue"}) soup.layout.vertex.push_back({name});
+    soup.vertex_values.resize(3);
+  }
+  for (int c = 0; c < 3; ++c) {
+    soup.vertex_values[c].resize(soup.positions.size() - 1, 0.0);
+    soup.vertex_values[c].push_back(rgb[c]);
+  }
+}
+
 }  // namespace
 
 Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) {
@@ -24,6 +42,7 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) 
   Lines lines(text);
   std::string_view line;
   std::string joined;
+  std::set<std::string> not_kept;
   while (lines.next(line)) {
     const std::size_t line_number = lines.number();
     if (continues(line)) {
@@ -54,6 +73,7 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) 
       }
       require_finite(p, soup.positions.size() + 1, line_number, path);
       soup.positions.push_back(p);
+      read_vertex_colour(rest, soup);
     } else if (keyword == "f" || keyword == "fo") {
       const std::size_t first = corners.size();
       for (std::string_view corner = take_token(rest); !corner.empty(); corner = take_token(rest)) {
@@ -83,10 +103,18 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) 
         continue;
       }
       soup.end_face(corners.size(), line_number);
+    } else if (keyword == "vt" || keyword == "vn" || keyword == "usemtl" || keyword == "mtllib") {
+      not_kept.insert(std::string(keyword));
     } else if (keyword == "l" || keyword == "p" || keyword == "curv" || keyword == "curv2" ||
                keyword == "surf") {
       ++report.elements_ignored;
     }
+  }
+  if (!not_kept.empty()) {
+    std::string kinds;
+    for (const auto& kind : not_kept) kinds += (kinds.empty() ? "" : ", ") + kind;
+    report.warnings.push_back("the file's " + kinds +
+                              " lines (texture coordinates, normals, materials) were not kept");
   }
   const long long vertex_count = static_cast<long long>(soup.positions.size());
   soup.corners.reserve(corners.size());
@@ -100,6 +128,7 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) 
       soup.corners.push_back(static_cast<int>(corners[c]));
     }
   }
+  for (auto& column : soup.vertex_values) column.resize(soup.positions.size(), 0.0);
   return soup;
 }
 

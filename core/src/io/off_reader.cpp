@@ -37,6 +37,7 @@ bool next_content(Lines& lines, std::string_view& line) {
 
 struct OffCounts {
   unsigned long long vertices = 0, faces = 0;
+  bool normals = false, colours = false;  // NOFF, COFF (or both)
 };
 
 // Reads the keyword and counts from `lines`, checking them against the `file_size` bytes of the
@@ -80,15 +81,73 @@ OffCounts parse_off_header(Lines& lines, std::uint64_t file_size, const fs::path
                    " faces, more than the remaining " + std::to_string(remaining) +
                    " bytes of the file can hold (corrupt header or truncated file)");
   }
-  return {vertex_count, face_count};
+  const std::string_view prefix = keyword.substr(0, keyword.size() - 3);
+  return {vertex_count, face_count, prefix.find('N') != std::string_view::npos,
+          prefix.find('C') != std::string_view::npos};
 }
 
 }  // namespace
 
+// The colour channels `numbers` hold (3: RGB, 4: RGBA; none when fewer), as 0-255 integers (uchar)
+// or numbers in [0, 1] (double).
+std::vector<ScalarAttribute> colour_channels(std::string_view numbers) {
+  const bool fractions = numbers.find_first_of(".eE") != std::string_view::npos;
+  int channels = 0;
+  while (!take_token(numbers).empty()) ++channels;
+  std::vector<ScalarAttribute> colour;
+  if (channels < 3) return colour;
+  for (const char* name : {"red", "green", "blue", "alpha"}) {
+    if (colour.size() == 3 && channels < 4) break;
+    colour.push_back({name, fractions ? ScalarType::Float64 : ScalarType::UInt8});
+  }
+  return colour;
+}
+
+// NOFF's normals and COFF's colours become vertex attributes, typed as the first vertex line
+// has them.
+void plan_off_attributes(const OffCounts& counts, std::string_view first_vertex_line, Soup& soup) {
+  if (counts.normals) {
+    for (const char* name : {"nx", "ny", "nz"}) soup.layout.vertex.push_back({name});
+  }
+  if (counts.colours) {
+    std::string_view rest = first_vertex_line;
+    for (int skip = 0; skip < (counts.normals ? 6 : 3); ++skip) take_token(rest);
+    for (auto& channel : colour_channels(rest)) soup.layout.vertex.push_back(channel);
+  }
+  soup.vertex_values.resize(soup.layout.vertex.size());
+}
+
+// The numbers left on a line, one per attribute column (0 where the line has none).
+void read_columns(std::string_view rest, std::vector<std::vector<double>>& columns,
+                  std::size_t line, const fs::path& path) {
+  for (auto& column : columns) {
+    const std::string_view token = take_token(rest);
+    double value = 0.0;
+    if (!token.empty() && !parse_double(token, value)) {
+      fail(path, at_line(line) + "expected a number, got " + quoted(token));
+    }
+    column.push_back(value);
+  }
+}
+
+// Colours after a face's indices become face attributes, typed by the first face line; returns
+// false when a face has colours the first face did not announce (they are not kept).
+bool read_off_face_colours(std::string_view rest, bool first_face, Soup& soup, std::size_t line,
+                           const fs::path& path) {
+  if (first_face) {
+    soup.layout.face = colour_channels(rest);
+    soup.face_values.resize(soup.layout.face.size());
+  }
+  if (soup.face_values.empty()) return take_token(rest).empty();
+  read_columns(rest, soup.face_values, line, path);
+  return true;
+}
+
 Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report) {
   require_text(text, path, "OFF");
   Lines lines(text);
-  const auto [vertex_count, face_count] = parse_off_header(lines, text.size(), path);
+  const OffCounts counts = parse_off_header(lines, text.size(), path);
+  const unsigned long long vertex_count = counts.vertices, face_count = counts.faces;
   std::string_view line;
   Soup soup;
   soup.positions.reserve(vertex_count);
@@ -97,6 +156,7 @@ Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report) 
       fail(path, "ends after " + std::to_string(v) + " of its " + std::to_string(vertex_count) +
                      " vertices (truncated?)");
     }
+    if (v == 0) plan_off_attributes(counts, line, soup);
     Point p;
     for (int axis = 0; axis < 3; ++axis) {
       const std::string_view token = take_token(line);
@@ -107,7 +167,9 @@ Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report) 
     }
     require_finite(p, v, lines.number(), path);
     soup.positions.push_back(p);
+    read_columns(line, soup.vertex_values, lines.number(), path);
   }
+  std::size_t faces_with_colours = 0;
   for (unsigned long long f = 0; f < face_count; ++f) {
     if (!next_content(lines, line)) {
       fail(path, "ends after " + std::to_string(f) + " of its " + std::to_string(face_count) +
@@ -134,7 +196,14 @@ Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report) 
       }
       soup.corners.push_back(static_cast<int>(index));
     }
+    if (!read_off_face_colours(line, f == 0, soup, lines.number(), path)) ++faces_with_colours;
     soup.end_face(soup.corners.size(), lines.number());
+  }
+  if (faces_with_colours) {
+    report.warnings.push_back(
+        std::to_string(faces_with_colours) +
+        " faces' colours (numbers after their vertex indices where the first face has none) "
+        "were not kept");
   }
   std::size_t extra_lines = 0;
   while (next_content(lines, line)) ++extra_lines;

@@ -118,9 +118,9 @@ PlyHeader parse_ply_header(std::string_view bytes, std::uint64_t file_size, cons
       if (name == "ascii") {
         header.encoding = PlyEncoding::Ascii;
       } else if (name == "binary_little_endian") {
-        header.encoding = PlyEncoding::LittleEndian;
+        header.encoding = PlyEncoding::BinaryLittleEndian;
       } else if (name == "binary_big_endian") {
-        header.encoding = PlyEncoding::BigEndian;
+        header.encoding = PlyEncoding::BinaryBigEndian;
       } else {
         fail(path, where + "unknown PLY format " + quoted(name));
       }

@@ -9,9 +9,11 @@
 #include <string_view>
 #include <vector>
 
+#include "holefill/attributes.h"
+
 namespace holefill::io {
 
-enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+using PlyType = ScalarType;
 
 // Bytes one value of `type` takes in a binary body.
 std::size_t size_of(PlyType type);
@@ -30,7 +32,7 @@ struct PlyElement {
   std::vector<PlyProperty> properties;
 };
 
-enum class PlyEncoding { Ascii, LittleEndian, BigEndian };
+using PlyEncoding = FileEncoding;
 
 struct PlyHeader {
   PlyEncoding encoding = PlyEncoding::Ascii;

@@ -89,7 +89,7 @@ class PlyBody {
     std::memcpy(raw, bytes_.data() + position_, size);
     position_ += size;
     const bool swap =
-        (encoding_ == PlyEncoding::BigEndian) != (std::endian::native == std::endian::big);
+        (encoding_ == PlyEncoding::BinaryBigEndian) != (std::endian::native == std::endian::big);
     if (swap) std::reverse(raw, raw + size);
     switch (type) {
       case PlyType::Int8:
@@ -162,8 +162,15 @@ int face_list_of(const PlyElement& face) {
   return -1;
 }
 
-// Reads one element's records; positions and face corners go into `soup` and `corners`.
-void read_element(PlyBody& body, const PlyElement& element, Soup& soup,
+// Where an element's values go: per property, the attribute column (or -1: not kept).
+struct ElementColumns {
+  std::vector<int> column_of;
+  std::vector<std::vector<double>>* columns = nullptr;
+};
+
+// Reads one element's records; positions and face corners go into `soup` and `corners`, other
+// values into their columns.
+void read_element(PlyBody& body, const PlyElement& element, const ElementColumns& kept, Soup& soup,
                   std::vector<long long>& corners, const fs::path& path) {
   const bool is_vertex = element.name == "vertex";
   const bool is_face = element.name == "face";
@@ -182,6 +189,9 @@ void read_element(PlyBody& body, const PlyElement& element, Soup& soup,
         const double value = body.read(property.type);
         for (int axis = 0; axis < 3; ++axis) {
           if (is_vertex && axis_of[axis] == i) p[axis] = value;
+        }
+        if (kept.columns && kept.column_of[i] >= 0) {
+          (*kept.columns)[kept.column_of[i]].push_back(value);
         }
         continue;
       }
@@ -211,6 +221,51 @@ void read_element(PlyBody& body, const PlyElement& element, Soup& soup,
   }
 }
 
+// The vertex and face properties the mesh keeps (every scalar one but x, y, z), their columns in
+// the soup, and a warning for each element or list that cannot be kept.
+std::vector<ElementColumns> plan_attributes(const PlyHeader& header, Soup& soup,
+                                            LoadReport& report) {
+  std::vector<ElementColumns> plan(header.elements.size());
+  AttributeLayout& layout = soup.layout;
+  layout.encoding = header.encoding;
+  for (std::size_t e = 0; e < header.elements.size(); ++e) {
+    const PlyElement& element = header.elements[e];
+    const bool is_vertex = element.name == "vertex", is_face = element.name == "face";
+    if (!is_vertex && !is_face) {
+      if (element.count) {
+        report.warnings.push_back("the '" + element.name + "' element (" +
+                                  std::to_string(element.count) + " records) was not kept");
+      }
+      continue;
+    }
+    auto& attributes = is_vertex ? layout.vertex : layout.face;
+    plan[e].columns = is_vertex ? &soup.vertex_values : &soup.face_values;
+    plan[e].column_of.assign(element.properties.size(), -1);
+    const int face_list = is_face ? face_list_of(element) : -1;
+    for (int i = 0; i < static_cast<int>(element.properties.size()); ++i) {
+      const PlyProperty& property = element.properties[i];
+      const bool position =
+          is_vertex && (property.name == "x" || property.name == "y" || property.name == "z");
+      if (position) {
+        if (property.name == "x" || property.type == ScalarType::Float64) {
+          layout.position_type = property.type;
+        }
+      } else if (i == face_list) {
+        layout.face_count_type = property.count_type;
+        layout.face_index_type = property.type;
+      } else if (property.is_list) {
+        report.warnings.push_back("the list property '" + property.name + "' of the '" +
+                                  element.name + "' element was not kept");
+      } else {
+        plan[e].column_of[i] = static_cast<int>(attributes.size());
+        attributes.push_back({property.name, property.type});
+        plan[e].columns->emplace_back().reserve(element.count);
+      }
+    }
+  }
+  return plan;
+}
+
 }  // namespace
 
 void check_ply_start(std::string_view first_bytes, std::uint64_t file_size, const fs::path& path) {
@@ -227,8 +282,11 @@ Soup parse_ply(std::string_view bytes, const fs::path& path, LoadReport& report)
   if (header.encoding == PlyEncoding::Ascii) require_text(body_bytes, path, "ASCII PLY");
   PlyBody body(body_bytes, header, path);
   Soup soup;
+  const std::vector<ElementColumns> plan = plan_attributes(header, soup, report);
   std::vector<long long> corners;
-  for (const auto& element : header.elements) read_element(body, element, soup, corners, path);
+  for (std::size_t e = 0; e < header.elements.size(); ++e) {
+    read_element(body, header.elements[e], plan[e], soup, corners, path);
+  }
   const std::string leftover = body.leftover();
   if (!leftover.empty()) {
     report.warnings.push_back(leftover + " after the last record the header counts were ignored " +

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "holefill/attributes.h"
 #include "holefill/errors.h"
 #include "holefill/mesh.h"
 
@@ -22,6 +23,11 @@ struct Soup {
   std::vector<int> corners;            // vertex indices of all faces, one after another
   std::vector<std::size_t> face_end;   // face f uses corners [face_end[f-1], face_end[f])
   std::vector<std::size_t> face_line;  // where face f was read (0: unknown), for messages
+  // What the file carried beyond positions and faces: one column per attribute of the layout,
+  // with a value per position (vertex) or per face.
+  AttributeLayout layout;
+  std::vector<std::vector<double>> vertex_values;
+  std::vector<std::vector<double>> face_values;
   std::size_t face_begin(std::size_t f) const { return f == 0 ? 0 : face_end[f - 1]; }
   std::size_t face_count() const { return face_end.size(); }
   // Closes the face whose last corner is corners[end - 1] (corners may be filled later).
@@ -30,8 +36,6 @@ struct Soup {
     face_line.push_back(line);
   }
 };
-
-// Indices into the soup's positions are ints (as OpenMesh's handles are).
 
 // Indices into the soup's positions are ints (as OpenMesh's handles are).
 constexpr long long kMaxVertices = std::numeric_limits<int>::max() - 1;

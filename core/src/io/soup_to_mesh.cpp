@@ -61,8 +61,9 @@ void triangulate_face(const std::vector<Point>& positions, std::vector<int> corn
   if (dropped) ++report.degenerate_faces_dropped;
 }
 
-// Removes triangles with the same corners in the same cyclic order as an earlier one.
-std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles) {
+// Removes triangles with the same corners in the same cyclic order as an earlier one, and their
+// entries in `sources` (the face each triangle came from).
+std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles, std::vector<int>& sources) {
   auto canonical = [](Triangle t) {
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     return t;
@@ -84,9 +85,12 @@ std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles) {
   if (count == 0) return 0;
   std::size_t kept = 0;
   for (std::size_t i = 0; i < triangles.size(); ++i) {
-    if (!duplicate[i]) triangles[kept++] = triangles[i];
+    if (duplicate[i]) continue;
+    sources[kept] = sources[i];
+    triangles[kept++] = triangles[i];
   }
   triangles.resize(kept);
+  sources.resize(kept);
   return count;
 }
 
@@ -167,9 +171,10 @@ std::vector<char> detach_non_manifold(const std::vector<EdgeUse>& uses, std::siz
 // OpenMesh cannot store a vertex whose closed fan of triangles is not all it has (two cones
 // touching at their tips). Each such closed fan gets its own copy of the vertex, at the same
 // position (appended to `positions`), so both surfaces stay closed. Fans with a boundary may
-// share a vertex: that is a pinched boundary, which OpenMesh stores. Returns the copies made.
+// share a vertex: that is a pinched boundary, which OpenMesh stores. Returns the copies made;
+// `origin` gets the vertex each copy was made from.
 std::size_t split_closed_fans(std::vector<Triangle>& triangles, const std::vector<char>& detached,
-                              std::vector<Point>& positions) {
+                              std::vector<Point>& positions, std::vector<int>& origin) {
   const std::vector<EdgeUse> uses = edge_uses(triangles);
   // Wedges are (triangle, corner) pairs; wedges at one vertex joined across shared edges form
   // that vertex's fans.
@@ -229,6 +234,7 @@ std::size_t split_closed_fans(std::vector<Triangle>& triangles, const std::vecto
         }
         copy_of_fan[fans[k].second] = static_cast<int>(positions.size());
         positions.push_back(positions[fans[k].first]);
+        origin.push_back(fans[k].first);
       }
     }
     i = j;
@@ -254,26 +260,55 @@ std::size_t count_duplicate_positions(const std::vector<Point>& positions) {
   return duplicates;
 }
 
+// Gives the mesh the soup's attributes: each vertex its source position's values, each face its
+// source polygon's.
+void copy_attributes(const Soup& soup, const std::vector<int>& vertex_origin,
+                     const std::vector<int>& face_origin, Mesh& mesh) {
+  if (soup.layout.empty()) return;
+  set_attribute_layout(mesh, soup.layout);
+  for (std::size_t a = 0; a < soup.layout.vertex.size(); ++a) {
+    const auto property = vertex_attribute(mesh, soup.layout.vertex[a].name);
+    for (const auto v : mesh.vertices()) {
+      mesh.property(property, v) = soup.vertex_values[a][vertex_origin[v.idx()]];
+    }
+  }
+  for (std::size_t a = 0; a < soup.layout.face.size(); ++a) {
+    const auto property = face_attribute(mesh, soup.layout.face[a].name);
+    for (const auto f : mesh.faces()) {
+      mesh.property(property, f) = soup.face_values[a][face_origin[f.idx()]];
+    }
+  }
+}
+
 }  // namespace
 
 Mesh build_mesh(const Soup& soup, LoadReport& report) {
   std::vector<Triangle> triangles;
+  std::vector<int> triangle_face;  // the polygon each triangle came from
   triangles.reserve(soup.corners.size() / 3 + soup.face_count());
   std::vector<int> corners;
   for (std::size_t f = 0; f < soup.face_count(); ++f) {
     corners.assign(soup.corners.begin() + static_cast<std::ptrdiff_t>(soup.face_begin(f)),
                    soup.corners.begin() + static_cast<std::ptrdiff_t>(soup.face_end[f]));
     triangulate_face(soup.positions, corners, triangles, report);
+    triangle_face.resize(triangles.size(), static_cast<int>(f));
   }
-  report.duplicate_faces_dropped = drop_duplicate_triangles(triangles);
+  report.duplicate_faces_dropped = drop_duplicate_triangles(triangles, triangle_face);
   report.faces_flipped = orient_consistently(triangles);
   if (report.format != "stl") {
     report.duplicate_positions = count_duplicate_positions(soup.positions);
   }
   const std::vector<char> detached = detach_non_manifold(edge_uses(triangles), triangles.size());
   std::vector<Point> positions = soup.positions;
-  report.vertices_split = split_closed_fans(triangles, detached, positions);
-  return assemble(positions, triangles, detached, soup.positions.size(), report);
+  std::vector<int> origin(positions.size());
+  for (std::size_t v = 0; v < origin.size(); ++v) origin[v] = static_cast<int>(v);
+  report.vertices_split = split_closed_fans(triangles, detached, positions, origin);
+  MeshSources sources;
+  Mesh mesh = assemble(positions, triangles, detached, soup.positions.size(), report, sources);
+  for (auto& v : sources.vertex) v = origin[v];
+  for (auto& f : sources.face) f = triangle_face[f];
+  copy_attributes(soup, sources.vertex, sources.face, mesh);
+  return mesh;
 }
 
 void add_warnings(LoadReport& report) {

@@ -1,67 +1,290 @@
 #include "writers.h"
 
+#include <algorithm>
+#include <bit>
 #include <charconv>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "holefill/attributes.h"
 
 namespace holefill::io {
 namespace {
 
 void append_number(std::string& out, double value) {
   char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
-  out.append(text, end);
+  out.append(text, std::to_chars(text, text + sizeof text, value).ptr);
+}
+
+void append_number(std::string& out, float value) {
+  char text[32];
+  out.append(text, std::to_chars(text, text + sizeof text, value).ptr);
 }
 
 void append_number(std::string& out, long long value) {
   char text[24];
-  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
-  out.append(text, end);
+  out.append(text, std::to_chars(text, text + sizeof text, value).ptr);
 }
 
-// Writes vertices as "<prefix>x y z" and faces as "<face_prefix>a b c" with indices from `base`.
-void append_lists(const Mesh& mesh, std::string& out, const char* vertex_prefix,
-                  const char* face_prefix, int base) {
-  for (const auto v : mesh.vertices()) {
-    const Point& p = mesh.point(v);
-    out += vertex_prefix;
-    for (int axis = 0; axis < 3; ++axis) {
-      if (axis) out += ' ';
-      append_number(out, p[axis]);
-    }
-    out += '\n';
+// The value as `type` stores it: rounded and clamped for integer types (interpolated colours).
+template <class T>
+T stored(double value) {
+  if constexpr (std::is_floating_point_v<T>) {
+    return static_cast<T>(value);
+  } else {
+    if (std::isnan(value)) return T{0};
+    const double clamped = std::clamp(std::round(value), double(std::numeric_limits<T>::min()),
+                                      double(std::numeric_limits<T>::max()));
+    return static_cast<T>(clamped);
   }
+}
+
+// Appends `value` as `type`: text (shortest round trip) or binary in the encoding's byte order.
+class ValueWriter {
+ public:
+  ValueWriter(std::string& out, FileEncoding encoding) : out_(out), encoding_(encoding) {}
+
+  void write(double value, ScalarType type) {
+    switch (type) {
+      case ScalarType::Int8:
+        return put<std::int8_t>(value);
+      case ScalarType::UInt8:
+        return put<std::uint8_t>(value);
+      case ScalarType::Int16:
+        return put<std::int16_t>(value);
+      case ScalarType::UInt16:
+        return put<std::uint16_t>(value);
+      case ScalarType::Int32:
+        return put<std::int32_t>(value);
+      case ScalarType::UInt32:
+        return put<std::uint32_t>(value);
+      case ScalarType::Float32:
+        return put<float>(value);
+      case ScalarType::Float64:
+        return put<double>(value);
+    }
+  }
+  // Between values of a record (text only).
+  void separate() {
+    if (encoding_ == FileEncoding::Ascii) out_ += ' ';
+  }
+  void end_record() {
+    if (encoding_ == FileEncoding::Ascii) out_ += '\n';
+  }
+
+ private:
+  template <class T>
+  void put(double value) {
+    const T typed = stored<T>(value);
+    if (encoding_ == FileEncoding::Ascii) {
+      if constexpr (std::is_floating_point_v<T>) {
+        append_number(out_, typed);
+      } else {
+        append_number(out_, static_cast<long long>(typed));
+      }
+      return;
+    }
+    char raw[sizeof(T)];
+    std::memcpy(raw, &typed, sizeof(T));
+    const bool big = encoding_ == FileEncoding::BinaryBigEndian;
+    if (big != (std::endian::native == std::endian::big)) std::reverse(raw, raw + sizeof(T));
+    out_.append(raw, sizeof(T));
+  }
+
+  std::string& out_;
+  FileEncoding encoding_;
+};
+
+const char* type_name(ScalarType type) {
+  static const char* const kNames[] = {"char", "uchar", "short", "ushort",
+                                       "int",  "uint",  "float", "double"};
+  return kNames[static_cast<int>(type)];
+}
+
+std::vector<OpenMesh::VPropHandleT<double>> vertex_properties(const Mesh& mesh,
+                                                              const AttributeLayout& layout) {
+  std::vector<OpenMesh::VPropHandleT<double>> handles;
+  for (const auto& a : layout.vertex) handles.push_back(vertex_attribute(mesh, a.name));
+  return handles;
+}
+
+std::vector<OpenMesh::FPropHandleT<double>> face_properties(const Mesh& mesh,
+                                                            const AttributeLayout& layout) {
+  std::vector<OpenMesh::FPropHandleT<double>> handles;
+  for (const auto& a : layout.face) handles.push_back(face_attribute(mesh, a.name));
+  return handles;
+}
+
+std::string ply_header(const Mesh& mesh, const AttributeLayout& layout) {
+  static const char* const kEncodings[] = {"ascii", "binary_little_endian", "binary_big_endian"};
+  std::string out = std::string("ply\nformat ") + kEncodings[static_cast<int>(layout.encoding)] +
+                    " 1.0\ncomment written by holefill\nelement vertex " +
+                    std::to_string(mesh.n_vertices()) + "\n";
+  for (const char* axis : {"x", "y", "z"}) {
+    out += std::string("property ") + type_name(layout.position_type) + " " + axis + "\n";
+  }
+  for (const auto& a : layout.vertex)
+    out += "property " + std::string(type_name(a.type)) + " " + a.name + "\n";
+  out += "element face " + std::to_string(mesh.n_faces()) + "\nproperty list " +
+         type_name(layout.face_count_type) + " " + type_name(layout.face_index_type) +
+         " vertex_indices\n";
+  for (const auto& a : layout.face)
+    out += "property " + std::string(type_name(a.type)) + " " + a.name + "\n";
+  return out + "end_header\n";
+}
+
+// PLY in the layout's encoding and types (ASCII doubles when the mesh came from elsewhere).
+std::string ply_bytes(const Mesh& mesh) {
+  const AttributeLayout layout = attribute_layout(mesh);
+  std::string out = ply_header(mesh, layout);
+  ValueWriter writer(out, layout.encoding);
+  const auto vertex_values = vertex_properties(mesh, layout);
+  for (const auto v : mesh.vertices()) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (axis) writer.separate();
+      writer.write(mesh.point(v)[axis], layout.position_type);
+    }
+    for (std::size_t a = 0; a < vertex_values.size(); ++a) {
+      writer.separate();
+      writer.write(mesh.property(vertex_values[a], v), layout.vertex[a].type);
+    }
+    writer.end_record();
+  }
+  const auto face_values = face_properties(mesh, layout);
   for (const auto f : mesh.faces()) {
-    out += face_prefix;
+    writer.write(3.0, layout.face_count_type);
+    for (const auto v : mesh.fv_range(f)) {
+      writer.separate();
+      writer.write(v.idx(), layout.face_index_type);
+    }
+    for (std::size_t a = 0; a < face_values.size(); ++a) {
+      writer.separate();
+      writer.write(mesh.property(face_values[a], f), layout.face[a].type);
+    }
+    writer.end_record();
+  }
+  return out;
+}
+
+// Faces as "<prefix>a b c" with vertex indices counted from `base`, then whatever `after`
+// appends to the line.
+template <class After>
+void append_faces(const Mesh& mesh, std::string& out, const char* prefix, int base, After&& after) {
+  for (const auto f : mesh.faces()) {
+    out += prefix;
     const char* separator = "";
     for (const auto v : mesh.fv_range(f)) {
       out += separator;
       append_number(out, static_cast<long long>(v.idx()) + base);
       separator = " ";
     }
+    after(f);
     out += '\n';
   }
+}
+
+// Vertices as "<prefix>x y z", then whatever `after` appends to the line.
+template <class After>
+void append_vertices(const Mesh& mesh, std::string& out, const char* prefix, After&& after) {
+  for (const auto v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    out += prefix;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (axis) out += ' ';
+      append_number(out, p[axis]);
+    }
+    after(v);
+    out += '\n';
+  }
+}
+
+// OBJ with the common "v x y z r g b" colours (in [0, 1]) when the mesh has colours.
+std::string obj_bytes(const Mesh& mesh) {
+  std::vector<std::array<float, 3>> colours;
+  vertex_colors(mesh, colours);
+  std::string out = "# written by holefill\n";
+  append_vertices(mesh, out, "v ", [&](VertexHandle v) {
+    if (colours.empty()) return;
+    for (const float c : colours[v.idx()]) {
+      out += ' ';
+      append_number(out, c);
+    }
+  });
+  append_faces(mesh, out, "f ", 1, [](FaceHandle) {});
+  return out;
+}
+
+// OFF; COFF, NOFF or CNOFF with the colours (in their own type: 0-255 or 0-1) and normals the
+// mesh carries, in the order the format puts them: position, normal, colour.
+std::string off_bytes(const Mesh& mesh) {
+  const AttributeLayout layout = attribute_layout(mesh);
+  std::vector<std::pair<OpenMesh::VPropHandleT<double>, ScalarType>> normal, colour;
+  for (const auto& a : layout.vertex) {
+    if (a.name == "nx" || a.name == "ny" || a.name == "nz") {
+      normal.emplace_back(vertex_attribute(mesh, a.name), a.type);
+    }
+  }
+  for (const char* name : {"red", "green", "blue", "alpha"}) {
+    const auto found = std::find_if(layout.vertex.begin(), layout.vertex.end(),
+                                    [&](const ScalarAttribute& a) { return a.name == name; });
+    if (found != layout.vertex.end())
+      colour.emplace_back(vertex_attribute(mesh, name), found->type);
+  }
+  if (normal.size() != 3) normal.clear();
+  if (colour.size() < 3) colour.clear();
+  std::string out = std::string(colour.empty() ? "" : "C") + (normal.empty() ? "" : "N") + "OFF\n" +
+                    std::to_string(mesh.n_vertices()) + ' ' + std::to_string(mesh.n_faces()) +
+                    " 0\n";
+  ValueWriter writer(out, FileEncoding::Ascii);
+  append_vertices(mesh, out, "", [&](VertexHandle v) {
+    for (const auto& list : {normal, colour}) {
+      for (const auto& [property, type] : list) {
+        writer.separate();
+        writer.write(mesh.property(property, v), type);
+      }
+    }
+  });
+  // Face attributes other than colours have no place in OFF.
+  const bool only_colours = std::all_of(layout.face.begin(), layout.face.end(), [](const auto& a) {
+    return a.name == "red" || a.name == "green" || a.name == "blue" || a.name == "alpha";
+  });
+  const auto face_colour =
+      only_colours ? face_properties(mesh, layout) : std::vector<OpenMesh::FPropHandleT<double>>{};
+  append_faces(mesh, out, "3 ", 0, [&](FaceHandle f) {
+    for (std::size_t a = 0; a < face_colour.size(); ++a) {
+      writer.separate();
+      writer.write(mesh.property(face_colour[a], f), layout.face[a].type);
+    }
+  });
+  return out;
+}
+
+// Binary STL: an 80-byte header, the count, and per triangle its normal, corners and 2 spare
+// bytes, all little-endian floats.
+std::string stl_bytes(const Mesh& mesh) {
+  std::string out = "binary STL written by holefill";
+  out.resize(80, ' ');
+  ValueWriter writer(out, FileEncoding::BinaryLittleEndian);
+  writer.write(static_cast<double>(mesh.n_faces()), ScalarType::UInt32);
+  for (const auto f : mesh.faces()) {
+    const Point normal = mesh.calc_face_normal(f);
+    for (int axis = 0; axis < 3; ++axis) writer.write(normal[axis], ScalarType::Float32);
+    for (const auto v : mesh.fv_range(f)) {
+      for (int axis = 0; axis < 3; ++axis) writer.write(mesh.point(v)[axis], ScalarType::Float32);
+    }
+    writer.write(0.0, ScalarType::UInt16);
+  }
+  return out;
 }
 
 }  // namespace
 
 std::string mesh_file_bytes(const Mesh& mesh, const std::string& ext) {
-  std::string out;
-  out.reserve(mesh.n_vertices() * 64 + mesh.n_faces() * 24 + 256);
-  if (ext == ".obj") {
-    out += "# written by holefill\n";
-    append_lists(mesh, out, "v ", "f ", 1);
-  } else if (ext == ".off") {
-    out +=
-        "OFF\n" + std::to_string(mesh.n_vertices()) + ' ' + std::to_string(mesh.n_faces()) + " 0\n";
-    append_lists(mesh, out, "", "3 ", 0);
-  } else {
-    out += "ply\nformat ascii 1.0\ncomment written by holefill\nelement vertex " +
-           std::to_string(mesh.n_vertices()) +
-           "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
-           std::to_string(mesh.n_faces()) +
-           "\nproperty list uchar int vertex_indices\nend_header\n";
-    append_lists(mesh, out, "", "3 ", 0);
-  }
-  return out;
+  if (ext == ".obj") return obj_bytes(mesh);
+  if (ext == ".off") return off_bytes(mesh);
+  if (ext == ".stl") return stl_bytes(mesh);
+  return ply_bytes(mesh);
 }
 
 }  // namespace holefill::io
