@@ -14,8 +14,9 @@ std::string face_property_name(const std::string& name) { return "holefill:f:" +
 
 bool is_normal(const std::string& name) { return name == "nx" || name == "ny" || name == "nz"; }
 
-// The largest value of an integer type; 1 for floating-point types (colours in [0, 1]).
-double colour_range(ScalarType type) {
+}  // namespace
+
+double full_intensity(ScalarType type) {
   switch (type) {
     case ScalarType::Int8:
       return 127.0;
@@ -35,6 +36,8 @@ double colour_range(ScalarType type) {
   }
   return 1.0;
 }
+
+namespace {
 
 // Harmonic values on the new vertices (the umbrella operator's fixed point, boundary values
 // fixed), by Gauss-Seidel sweeps from the mean of the boundary.
@@ -173,7 +176,7 @@ bool vertex_colors(const Mesh& mesh, std::vector<std::array<float, 3>>& rgb) {
                                     [&](const ScalarAttribute& a) { return a.name == names[c]; });
     if (found == layout.vertex.end()) return false;
     channel[c] = vertex_attribute(mesh, names[c]);
-    range[c] = colour_range(found->type);
+    range[c] = full_intensity(found->type);
   }
   rgb.resize(mesh.n_vertices());
   for (const auto v : mesh.vertices()) {

@@ -67,6 +67,10 @@ OpenMesh::FPropHandleT<double> face_attribute(const Mesh& mesh, const std::strin
 // hole have. Original elements are not touched. Does nothing when the mesh carries no attributes.
 void interpolate_patch_attributes(Mesh& mesh, const Patch& patch);
 
+// The value of a colour channel at full intensity: the largest value of an integer type (255 for
+// uchar), 1 for floating-point types.
+double full_intensity(ScalarType type);
+
 // Per-vertex colours in [0, 1] when the mesh carries red, green and blue (integer types scaled
 // by their range, e.g. uchar by 255); false, with `rgb` cleared, otherwise.
 bool vertex_colors(const Mesh& mesh, std::vector<std::array<float, 3>>& rgb);

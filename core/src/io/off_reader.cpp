@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -103,6 +104,19 @@ std::vector<ScalarAttribute> colour_channels(std::string_view numbers) {
   return colour;
 }
 
+// Colour channels typed uchar by their first line keep that type only if every value fits it
+// (a whole number 0-255); otherwise they become doubles, which hold whatever the file has.
+void settle_colour_types(std::vector<ScalarAttribute>& attributes,
+                         const std::vector<std::vector<double>>& columns) {
+  for (std::size_t a = 0; a < attributes.size(); ++a) {
+    if (attributes[a].type != ScalarType::UInt8) continue;
+    const bool fits = std::all_of(columns[a].begin(), columns[a].end(), [](double value) {
+      return value >= 0.0 && value <= 255.0 && value == std::floor(value);
+    });
+    if (!fits) attributes[a].type = ScalarType::Float64;
+  }
+}
+
 // NOFF's normals and COFF's colours become vertex attributes, typed as the first vertex line
 // has them.
 void plan_off_attributes(const OffCounts& counts, std::string_view first_vertex_line, Soup& soup) {
@@ -199,6 +213,8 @@ Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report) 
     if (!read_off_face_colours(line, f == 0, soup, lines.number(), path)) ++faces_with_colours;
     soup.end_face(soup.corners.size(), lines.number());
   }
+  settle_colour_types(soup.layout.vertex, soup.vertex_values);
+  settle_colour_types(soup.layout.face, soup.face_values);
   if (faces_with_colours) {
     report.warnings.push_back(
         std::to_string(faces_with_colours) +

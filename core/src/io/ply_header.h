@@ -18,6 +18,8 @@ using PlyType = ScalarType;
 // Bytes one value of `type` takes in a binary body.
 std::size_t size_of(PlyType type);
 bool is_integer_type(PlyType type);
+// `value` lies in the range of the integer type `type`.
+bool fits(long long value, PlyType type);
 
 struct PlyProperty {
   std::string name;

@@ -122,13 +122,21 @@ class PlyBody {
       if (!parse_integer(token, value)) {
         fail(path_, where_ + ": expected a whole number, got " + quoted(token));
       }
+      if (!fits(value, type)) {
+        fail(path_, where_ + ": " + quoted(token) + " does not fit the property's type");
+      }
       return static_cast<double>(value);
     }
     double value = 0.0;
     if (!parse_double(token, value)) {
       fail(path_, where_ + ": expected a number, got " + quoted(token));
     }
-    return value;
+    // What the header says the value is: a float property holds a float, as in a binary file.
+    if (type != PlyType::Float32) return value;
+    if (!(std::abs(value) <= std::numeric_limits<float>::max())) {
+      return std::isnan(value) ? value : std::copysign(HUGE_VAL, value);  // as a float reads
+    }
+    return static_cast<double>(static_cast<float>(value));
   }
 
   std::string_view bytes_;
@@ -247,9 +255,14 @@ std::vector<ElementColumns> plan_attributes(const PlyHeader& header, Soup& soup,
       const bool position =
           is_vertex && (property.name == "x" || property.name == "y" || property.name == "z");
       if (position) {
-        if (property.name == "x" || property.type == ScalarType::Float64) {
+        // Written back as they came when all three are floats or all doubles; otherwise (mixed
+        // or integer types, which new positions would not fit) as doubles, which hold them all.
+        if (property.name == "x") {
           layout.position_type = property.type;
+        } else if (property.type != layout.position_type) {
+          layout.position_type = ScalarType::Float64;
         }
+        if (is_integer_type(property.type)) layout.position_type = ScalarType::Float64;
       } else if (i == face_list) {
         layout.face_count_type = property.count_type;
         layout.face_index_type = property.type;

@@ -199,16 +199,24 @@ void append_vertices(const Mesh& mesh, std::string& out, const char* prefix, Aft
   }
 }
 
-// OBJ with the common "v x y z r g b" colours (in [0, 1]) when the mesh has colours.
+// OBJ with the common "v x y z r g b" colours (in [0, 1]: integer channels are scaled, others
+// written as they are, so OBJ colours round-trip exactly) when the mesh has colours.
 std::string obj_bytes(const Mesh& mesh) {
-  std::vector<std::array<float, 3>> colours;
-  vertex_colors(mesh, colours);
+  const AttributeLayout layout = attribute_layout(mesh);
+  std::vector<std::pair<OpenMesh::VPropHandleT<double>, double>> channels;  // and their scale
+  for (const char* name : {"red", "green", "blue"}) {
+    const auto found = std::find_if(layout.vertex.begin(), layout.vertex.end(),
+                                    [&](const ScalarAttribute& a) { return a.name == name; });
+    if (found == layout.vertex.end()) break;
+    channels.emplace_back(vertex_attribute(mesh, name), full_intensity(found->type));
+  }
+  if (channels.size() != 3) channels.clear();
   std::string out = "# written by holefill\n";
   append_vertices(mesh, out, "v ", [&](VertexHandle v) {
-    if (colours.empty()) return;
-    for (const float c : colours[v.idx()]) {
+    for (const auto& [property, scale] : channels) {
       out += ' ';
-      append_number(out, c);
+      append_number(out,
+                    scale == 1.0 ? mesh.property(property, v) : mesh.property(property, v) / scale);
     }
   });
   append_faces(mesh, out, "f ", 1, [](FaceHandle) {});
