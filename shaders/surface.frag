@@ -5,6 +5,7 @@
 // inside of the surface, seen through a hole, reads as inside.
 in vec3 v_view_position;
 in vec3 v_view_normal;
+in vec4 v_color;
 
 uniform bool u_flat;
 uniform usamplerBuffer u_face_stages;
@@ -18,6 +19,9 @@ void main() {
   vec3 to_eye = normalize(-v_view_position);
   uint stage = texelFetch(u_face_stages, gl_PrimitiveID).r;
   vec3 base = u_stage_colors[min(stage, 3u)];
+  // A file's vertex colours colour the original surface; patches blend them with their stage's
+  // colour, so that both the fill and its interpolated colours show.
+  if (v_color.a > 0.5) base = stage == 0u ? v_color.rgb : mix(base, v_color.rgb, 0.5);
   if (dot(normal, to_eye) < 0.0) {
     normal = -normal;
     base = base * vec3(0.55, 0.5, 0.6);

@@ -32,19 +32,22 @@ MeshBuffers::MeshBuffers() {
   glGenVertexArrays(1, &vao_);
   glGenVertexArrays(1, &edges_vao_);
   glGenVertexArrays(1, &points_vao_);
-  GLuint buffers[6];
-  glGenBuffers(6, buffers);
+  GLuint buffers[7];
+  glGenBuffers(7, buffers);
   positions_ = buffers[0];
   normals_ = buffers[1];
   triangles_ = buffers[2];
   edges_ = buffers[3];
   points_ = buffers[4];
   stages_ = buffers[5];
+  colors_ = buffers[6];
   glGenTextures(1, &stages_texture_);
 
   glBindVertexArray(vao_);
   vec3_attribute(0, positions_);
   vec3_attribute(1, normals_);
+  glBindBuffer(GL_ARRAY_BUFFER, colors_);
+  glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangles_);
   glBindVertexArray(edges_vao_);
   vec3_attribute(0, positions_);
@@ -56,8 +59,8 @@ MeshBuffers::MeshBuffers() {
 }
 
 MeshBuffers::~MeshBuffers() {
-  const GLuint buffers[] = {positions_, normals_, triangles_, edges_, points_, stages_};
-  glDeleteBuffers(6, buffers);
+  const GLuint buffers[] = {positions_, normals_, triangles_, edges_, points_, stages_, colors_};
+  glDeleteBuffers(7, buffers);
   glDeleteTextures(1, &stages_texture_);
   const GLuint arrays[] = {vao_, edges_vao_, points_vao_};
   glDeleteVertexArrays(3, arrays);
@@ -67,7 +70,14 @@ void MeshBuffers::upload(const SurfaceArrays& arrays) {
   glBindVertexArray(0);
   fill_buffer(GL_ARRAY_BUFFER, positions_, arrays.positions);
   fill_buffer(GL_ARRAY_BUFFER, normals_, arrays.normals);
+  fill_buffer(GL_ARRAY_BUFFER, colors_, arrays.colors);
   glBindVertexArray(vao_);
+  has_colors_ = !arrays.colors.empty();
+  if (has_colors_) {
+    glEnableVertexAttribArray(2);
+  } else {
+    glDisableVertexAttribArray(2);
+  }
   fill_buffer(GL_ELEMENT_ARRAY_BUFFER, triangles_, arrays.triangles);
   glBindVertexArray(edges_vao_);
   fill_buffer(GL_ELEMENT_ARRAY_BUFFER, edges_, arrays.edges);
@@ -90,6 +100,7 @@ void MeshBuffers::draw_surface(int texture_unit) const {
   glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(texture_unit));
   glBindTexture(GL_TEXTURE_BUFFER, stages_texture_);
   glBindVertexArray(vao_);
+  if (!has_colors_) glVertexAttrib4f(2, 0.0f, 0.0f, 0.0f, 0.0f);  // alpha 0: no file colour
   glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
   glBindVertexArray(0);
 }

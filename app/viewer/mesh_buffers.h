@@ -28,6 +28,8 @@ class MeshBuffers {
   GLuint edges_vao_ = 0, edges_ = 0;
   GLuint points_vao_ = 0, points_ = 0;
   GLuint stages_ = 0, stages_texture_ = 0;
+  GLuint colors_ = 0;
+  bool has_colors_ = false;
   GLsizei triangle_indices_ = 0, edge_indices_ = 0, point_indices_ = 0;
 };
 

@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "holefill/attributes.h"
+
 namespace holefill::viewer {
 namespace {
 
@@ -23,6 +25,11 @@ SurfaceArrays surface_arrays(const Mesh& mesh, const std::vector<const HoleFill*
     arrays.hi = glm::max(arrays.hi, arrays.positions.back());
   }
   if (n_vertices == 0) arrays.lo = arrays.hi = glm::vec3(0.0f);
+  std::vector<std::array<float, 3>> rgb;
+  if (vertex_colors(mesh, rgb)) {
+    arrays.colors.reserve(rgb.size());
+    for (const auto& c : rgb) arrays.colors.emplace_back(c[0], c[1], c[2], 1.0f);
+  }
 
   arrays.normals.assign(n_vertices, glm::vec3(0.0f));
   arrays.triangles.reserve(3 * mesh.n_faces());

@@ -14,6 +14,7 @@ namespace holefill::viewer {
 struct SurfaceArrays {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;             // area-weighted vertex normals
+  std::vector<glm::vec4> colors;              // the file's vertex colours (alpha 1), or empty
   std::vector<std::uint32_t> triangles;       // 3 per face, in face order
   std::vector<std::uint8_t> face_stages;      // Stage per face (Original outside patches)
   std::vector<std::uint32_t> edges;           // 2 per edge, for the wireframe

@@ -227,6 +227,21 @@ TEST_F(Attributes, ObjVertexColoursRoundTripAndWhatIsNotKeptIsSaid) {
   EXPECT_NE(read(dir_ / "out.obj").find("v 0 0 1 0.25 0.5 0.75\n"), std::string::npos);
 }
 
+TEST_F(Attributes, VertexColoursForDisplayAreScaledByTheirType) {
+  const Mesh uchar_colours = load_mesh(write("in.ply", coloured_sphere_ply("ascii")));
+  std::vector<std::array<float, 3>> rgb;
+  ASSERT_TRUE(vertex_colors(uchar_colours, rgb));
+  ASSERT_EQ(rgb.size(), uchar_colours.n_vertices());
+  const VertexHandle v(5);
+  EXPECT_FLOAT_EQ(rgb[5][0], static_cast<float>(value(uchar_colours, "red", v) / 255.0));
+  const Mesh float_colours =
+      load_mesh(write("in.obj", "v 0 0 0 0.5 0.25 1\nv 1 0 0 0 0 0\nv 0 1 0 1 1 1\nf 1 2 3\n"));
+  ASSERT_TRUE(vertex_colors(float_colours, rgb));
+  EXPECT_FLOAT_EQ(rgb[0][1], 0.25f);
+  EXPECT_FALSE(vertex_colors(testing::make_icosphere(0), rgb));
+  EXPECT_TRUE(rgb.empty());
+}
+
 TEST_F(Attributes, StlIsWrittenBinaryAndReadsBack) {
   const Mesh mesh = testing::make_icosphere(1);
   save_mesh(mesh, dir_ / "out.stl");
