@@ -94,9 +94,13 @@ int run_command(CommandLine& line, const Streams& streams) {
 }
 
 // A standard output that could not be written (`info > /dev/full`, a closed pipe) fails the run.
+// The reason is the last system error: the failed flush's, or that of the write that failed
+// first (the table is the last thing written, so nothing has overwritten it).
 int check_stdout(int code, std::ostream& out, std::ostream& err) {
-  errno = 0;
-  out.flush();
+  if (out) {
+    errno = 0;
+    out.flush();
+  }
   if (out) return code;
   err << "holefill: standard output could not be written" << last_system_error() << "\n";
   return code == kOk || code == kSomeHolesNotFilled || code == kPatchesIntersect ? kWriteFailed

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
+#include <mutex>
 #include <new>
+#include <system_error>
 #include <thread>
 
 #include "face_grid.h"
@@ -209,20 +212,38 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
     if (progress) progress->set_fraction(0.5 * static_cast<double>(steps) / chosen.size());
   };
   const auto cancelled = [&] { return progress && progress->cancelled(); };
+  // What a worker throws (std::bad_alloc) stops the others and is rethrown here, the mesh
+  // unchanged.
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
   auto worker = [&] {
-    for (std::size_t i = next++; i < chosen.size() && !cancelled(); i = next++) {
-      plan_seconds[i] = timed([&] {
-        plans[i] = plan_group(mesh, holes, chosen[i], options.triangulate, options.join);
-      });
-      report(++planned);
+    try {
+      for (std::size_t i = next++; i < chosen.size() && !cancelled(); i = next++) {
+        plan_seconds[i] = timed([&] {
+          plans[i] = plan_group(mesh, holes, chosen[i], options.triangulate, options.join);
+        });
+        report(++planned);
+      }
+    } catch (...) {
+      next = chosen.size();
+      const std::lock_guard lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
     }
   };
   const unsigned threads =
       std::min<unsigned>(std::max(1u, std::thread::hardware_concurrency()), chosen.size());
   std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+  pool.reserve(threads);
+  for (unsigned t = 1; t < threads; ++t) {
+    try {
+      pool.emplace_back(worker);
+    } catch (const std::system_error&) {
+      break;  // no thread to spare (memory, limits): the ones running share the holes
+    }
+  }
   worker();
   for (auto& thread : pool) thread.join();
+  if (failure) std::rethrow_exception(failure);
   if (cancelled()) return {};
 
   // Patches are checked against the faces near them; each finished patch joins those faces.

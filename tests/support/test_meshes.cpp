@@ -76,6 +76,14 @@ Mesh without_faces(const Mesh& mesh, const std::function<bool(const Point&)>& re
   return cut;
 }
 
+Mesh grid_with_square_holes(int n) {
+  const auto in_a_hole = [n](const Point& centroid) {
+    const int x = static_cast<int>(centroid[0] * n), y = static_cast<int>(centroid[1] * n);
+    return x % 3 == 1 && y % 3 == 1;
+  };
+  return without_faces(make_grid(n + 1, [](double, double) { return 0.0; }), in_a_hole);
+}
+
 std::vector<Point> random_loop(int n, std::mt19937& rng, double noise, double waviness) {
   std::uniform_real_distribution<double> jitter(-noise, noise);
   std::vector<Point> points;

@@ -15,6 +15,10 @@ Mesh make_icosphere(int levels);
 // A height field z = height(x, y) over [0,1]^2 sampled on an n x n vertex grid.
 Mesh make_grid(int n, const std::function<double(double, double)>& height);
 
+// A flat n x n grid of squares with every third square of every third row left out: about
+// (n/3)^2 holes of 4 edges.
+Mesh grid_with_square_holes(int n);
+
 // A copy of `mesh` without the faces for which `remove(face centroid)` is true; vertices keep
 // their indices (unreferenced ones stay, isolated).
 Mesh without_faces(const Mesh& mesh, const std::function<bool(const Point&)>& remove);

@@ -89,6 +89,8 @@ std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch);
 // With `progress`: reports the share of holes triangulated and added, and stops when cancelled:
 // before any patch is added when the cancel comes during the triangulations (mesh unchanged,
 // nothing returned), else before the next hole (the mesh holds exactly the returned fills).
+// Running out of memory while triangulating (on any of its threads) throws std::bad_alloc with
+// the mesh unchanged.
 std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
                                  const FillOptions& options, const HoleSelection& selection = {},
                                  Progress* progress = nullptr);
