@@ -19,7 +19,7 @@ constexpr const char* kDescription =
     "holefill " HOLEFILL_VERSION ": fill holes in triangle meshes (Wei, Wu & Pang 2010)";
 
 constexpr const char* kExitCodes =
-    "Meshes are read from .obj .off .ply .stl and written as .obj .off .ply.\n"
+    "Meshes are read from .obj .off .ply .stl and written as .obj .off .ply .stl.\n"
     "Exit codes: 0 ok, 1 some holes not filled (output written), 2 usage error, 3 bad input,\n"
     "4 output not written, 5 every hole filled but some patch intersects the mesh,\n"
     "6 internal error, 7 out of memory (nothing written).";
@@ -34,14 +34,17 @@ struct CommandLine {
   std::string help_topic;
   FillArguments fill_arguments;
   bool quiet = false;
+  bool verbose = false;
 
   CommandLine() {
     app.set_version_flag("--version", "holefill " HOLEFILL_VERSION);
     app.footer(kExitCodes);
     app.require_subcommand(1);
-    app.fallthrough();  // -q also after the command's name
-    app.add_flag("-q,--quiet", quiet,
-                 "print no table on stdout (warnings and errors still go to stderr)");
+    app.fallthrough();  // -q and -v also after the command's name
+    app.add_flag("-q,--quiet", quiet, "no table on stdout, no progress (warnings still on stderr)")
+        ->excludes(app.add_flag("-v,--verbose", verbose,
+                                "a progress line per hole on stderr from the start (without -v:\n"
+                                "once a fill has taken a second)"));
     info = app.add_subcommand("info", "vertices, faces, components and a table of holes");
     info->add_option("MESH", info_arguments.input, "the mesh to describe (-: stdin)")->required();
     info->add_flag("--json", info_arguments.json, "print the counts and holes as JSON");
@@ -52,7 +55,9 @@ struct CommandLine {
     help->add_option("COMMAND", help_topic, "info or fill")->check(CLI::IsMember({"info", "fill"}));
   }
 
-  Verbosity verbosity() const { return quiet ? Verbosity::Quiet : Verbosity::Normal; }
+  Verbosity verbosity() const {
+    return quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;
+  }
 };
 
 int usage_error(const std::string& message, std::ostream& err) {

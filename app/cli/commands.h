@@ -16,8 +16,9 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Whether the commands print their tables on stdout (-q: no); stderr is never silenced.
-enum class Verbosity { Quiet, Normal };
+// -q: no table on stdout and no progress (warnings and errors still on stderr); -v: progress
+// lines from the start instead of after a second.
+enum class Verbosity { Quiet, Normal, Verbose };
 
 struct Streams {
   std::istream& in;

@@ -121,7 +121,8 @@ void add_fill_options(CLI::App& command, FillArguments& a) {
   command.add_option("MESH", a.input, "the mesh to fill (.obj .off .ply .stl; -: stdin)")
       ->required();
   command
-      .add_option("-o,--output", a.output, "where to write the result (.obj .off .ply; -: stdout)")
+      .add_option("-o,--output", a.output,
+                  "where to write the result (.obj .off .ply .stl; -: stdout)")
       ->required();
   add_format_option(command, a.format);
   command.add_option("--report", a.report_path,

@@ -1,5 +1,6 @@
 // `holefill fill MESH -o OUT`: check the outputs, fill the selected holes, write the mesh and the
 // report, then print the table (after the files, so a closed stdout cannot cost them).
+#include <optional>
 #include <ostream>
 
 #include "commands.h"
@@ -7,6 +8,7 @@
 #include "holefill/holes.h"
 #include "mesh_input.h"
 #include "outputs.h"
+#include "progress_lines.h"
 #include "report.h"
 #include "table.h"
 
@@ -99,7 +101,12 @@ int run_fill(FillArguments& a, const Streams& streams) {
   report.faces_before = mesh.n_faces();
   report.holes_before = holes.size();
 
-  const auto fills = fill_holes(mesh, holes, a.options, a.selection);
+  std::optional<ProgressLines> progress;
+  if (streams.verbosity != Verbosity::Quiet) {
+    progress.emplace(streams.err, a.input, streams.verbosity == Verbosity::Verbose);
+  }
+  const auto fills =
+      fill_holes(mesh, holes, a.options, a.selection, progress ? &progress->progress() : nullptr);
   report.vertices_after = mesh.n_vertices();
   report.faces_after = mesh.n_faces();
   report.holes_after = find_holes(mesh).size();

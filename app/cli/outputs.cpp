@@ -27,7 +27,7 @@ void check_format(const FillArguments& a) {
   const auto& writable = writable_extensions();
   if (std::find(writable.begin(), writable.end(), ext) == writable.end()) {
     throw UsageError("-o " + a.output + ": cannot write '" + ext +
-                     "' files (use .obj, .off or .ply)");
+                     "' files (use .obj, .off, .ply or .stl)");
   }
 }
 

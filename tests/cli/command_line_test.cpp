@@ -77,6 +77,24 @@ TEST_F(Cli, QuietPrintsNoTable) {
   }
 }
 
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// A long run showed nothing until the end; -v shows a line per hole from the start, -q none.
+TEST_F(Cli, VerboseShowsALineAsEachHoleIsTriangulatedAndAdded) {
+  const CliRun verbose = run_cli({"fill", bunny(), "-o", in_dir("v.obj"), "-v"});
+  ASSERT_EQ(verbose.code, cli::kOk) << verbose.err;
+  EXPECT_EQ(count(verbose.err, "holes triangulated"), 3u) << verbose.err;
+  EXPECT_EQ(count(verbose.err, "patches added"), 3u) << verbose.err;
+  EXPECT_NE(verbose.err.find("patches added 100 %"), std::string::npos) << verbose.err;
+  const CliRun quiet = run_cli({"fill", bunny(), "-o", in_dir("q.obj"), "-q"});
+  EXPECT_EQ(count(quiet.err, "holefill:"), 0u) << quiet.err;
+  EXPECT_EQ(run_cli({"fill", bunny(), "-o", in_dir("x.obj"), "-q", "-v"}).code, cli::kUsage);
+}
+
 // Hole ids were read as int: 4294967296 filled hole 0 and 4294967298 hole 2; "010" is not 8.
 TEST_F(Cli, HoleIdsAreReadExactlyAndOutOfRangeIdsRefused) {
   const std::string out = in_dir("x.obj");
