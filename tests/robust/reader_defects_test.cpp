@@ -149,6 +149,15 @@ TEST(ReaderDefects, ABinaryStlWithTrailingBytesIsReadWithAWarning) {
   EXPECT_NE(reason.find("4 triangles"), std::string::npos) << reason;
 }
 
+// Old Blender exporters wrote a bare line of text into the PLY header; such files are read.
+TEST(ReaderDefects, ABareTextLineInAPlyHeaderIsSkippedWithAWarning) {
+  std::string text = ascii_ply(kTetraPoints, kTetraFaces);
+  text.insert(text.find("element"), "Created by Blender3D 247 - www.blender.org\n");
+  LoadReport report;
+  expect_tetrahedron(load_mesh_from_memory(text, "t.ply", &report), "bare header line");
+  EXPECT_TRUE(has_warning(report, "the first is line 3")) << report.warnings.size();
+}
+
 // A 2 GiB file (sparse: it takes no disk) must be refused from its first bytes, in a child
 // process whose address space (256 MiB) could never hold the file.
 TEST(ReaderDefects, AHugeFileIsRefusedFromItsFirstBytesWithoutReadingItWhole) {

@@ -188,7 +188,7 @@ PlyHeader parse_ply_header(std::string_view bytes, std::uint64_t file_size, cons
     } else if (keyword == "end_header") {
       ended = true;
     } else {
-      fail(path, where + "unknown header line " + quoted(line));
+      header.unknown_lines.push_back(lines.number());
     }
   }
   if (!ended) fail(path, "the header has no 'end_header' line (truncated?)");

@@ -41,6 +41,8 @@ struct PlyHeader {
   std::vector<PlyElement> elements;
   std::size_t body_offset = 0;   // bytes before the body
   std::size_t header_lines = 0;  // lines before the body, for messages about ASCII body lines
+  // Header lines with no PLY keyword (old exporters wrote bare text as a comment): skipped.
+  std::vector<std::size_t> unknown_lines;
 };
 
 // The header at the start of `bytes` (which may be only the file's first bytes) of a PLY file of

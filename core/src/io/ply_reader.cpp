@@ -300,6 +300,12 @@ Soup parse_ply(std::string_view bytes, const fs::path& path, LoadReport& report)
   for (std::size_t e = 0; e < header.elements.size(); ++e) {
     read_element(body, header.elements[e], plan[e], soup, corners, path);
   }
+  if (!header.unknown_lines.empty()) {
+    report.warnings.push_back(std::to_string(header.unknown_lines.size()) +
+                              " header lines with no PLY keyword were skipped as comments (the "
+                              "first is line " +
+                              std::to_string(header.unknown_lines.front()) + ")");
+  }
   const std::string leftover = body.leftover();
   if (!leftover.empty()) {
     report.warnings.push_back(leftover + " after the last record the header counts were ignored " +
