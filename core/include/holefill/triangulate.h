@@ -47,6 +47,10 @@ struct TriangulateOptions {
   // plain O(n^3) loop, kept as the reference the fast path is tested against.
   bool prune = true;
   RestrictedSearch restricted{};
+  // Threads for the full search: 0 chooses (one for small holes, where threads cost more than
+  // they save, else every core that other searches running at the same time leave free); n uses
+  // n. The triangulation is the same whatever the number.
+  unsigned threads = 0;
 };
 
 // The dynamic program stores apexes in 16 bits: holes must have fewer boundary edges than this.
