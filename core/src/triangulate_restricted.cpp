@@ -14,6 +14,7 @@
 
 #include "dp_step.h"
 #include "holefill/triangulate.h"
+#include "nearest_neighbours.h"
 
 namespace holefill {
 namespace {
@@ -48,17 +49,9 @@ ChordSet allowed_chords(const HolePolygon& polygon, const RestrictedSearch& sear
   for (std::size_t a = 0; a < anchors.size(); ++a) {
     for (std::size_t b = a + 1; b < anchors.size(); ++b) set.add(anchors[a], anchors[b]);
   }
-  const auto& p = polygon.points;
-  std::vector<std::pair<double, int>> by_distance;
+  const auto neighbours = detail::nearest_neighbours(polygon.points, search.nearest_neighbours);
   for (int i = 0; i < n; ++i) {
-    by_distance.clear();
-    for (int j = 0; j < n; ++j) {
-      if (j != i) by_distance.emplace_back((p[i] - p[j]).sqrnorm(), j);
-    }
-    const int nearest =
-        std::min<int>(search.nearest_neighbours, static_cast<int>(by_distance.size()));
-    std::partial_sort(by_distance.begin(), by_distance.begin() + nearest, by_distance.end());
-    for (int r = 0; r < nearest; ++r) set.add(i, by_distance[r].second);
+    for (const int j : neighbours[i]) set.add(i, j);
   }
   set.add(0, n - 1);  // the whole polygon, the root cell
   return set;
