@@ -34,9 +34,6 @@ std::size_t row_start(int n, int i) {
   const std::size_t row = static_cast<std::size_t>(i);
   return row * static_cast<std::size_t>(n) - row * (row + 1) / 2;
 }
-std::size_t row_index(int n, int i, int k) {
-  return row_start(n, i) + static_cast<std::size_t>(k - i - 1);
-}
 std::size_t column_start(int k) {
   const std::size_t column = static_cast<std::size_t>(k);
   return column * (column - 1) / 2;
@@ -61,15 +58,22 @@ struct Tables {
         row_area(cell_count(n), 0.0),
         column_area(cell_count(n), 0.0f),
         apex(cell_count(n), 0),  // polygon edges keep 0 (never read)
-        forbidden(cell_count(n), false) {
+        forbidden(cell_count(n), false),
+        row_starts(static_cast<std::size_t>(n)) {
+    for (int i = 0; i < n; ++i) row_starts[i] = row_start(n, i);
     for (const auto& [a, b] : polygon.forbidden_chords) {
       if (a == b || std::min(a, b) < 0 || std::max(a, b) >= n) continue;  // not a chord
-      forbidden[row_index(n, std::min(a, b), std::max(a, b))] = true;
+      forbidden[row_index(std::min(a, b), std::max(a, b))] = true;
     }
   }
 
+  // Where cell (i, k) lies in the row-by-row tables.
+  std::size_t row_index(int i, int k) const {
+    return row_starts[static_cast<std::size_t>(i)] + static_cast<std::size_t>(k - i - 1);
+  }
+
   void store(int i, int k, const CellBest& best) {
-    const std::size_t cell = row_index(n, i, k), column = column_start(k) + i;
+    const std::size_t cell = row_index(i, k), column = column_start(k) + i;
     const bool feasible = best.apex >= 0;
     row_key[cell] = column_key[column] = feasible ? best.value.key : weight_key::kInfeasible;
     row_area[cell] = feasible ? best.value.area : INFINITY;
@@ -82,7 +86,8 @@ struct Tables {
   std::vector<double> row_area;
   std::vector<float> column_area;
   std::vector<std::uint16_t> apex;
-  std::vector<bool> forbidden;  // written before the threads start
+  std::vector<bool> forbidden;          // written before the threads start
+  std::vector<std::size_t> row_starts;  // row_start(n, i), looked up rather than recomputed
 };
 
 // Solves whole rows of the tables; one per thread. With kPrune a candidate is skipped when the
@@ -112,9 +117,14 @@ class RowSolver {
   }
 
  private:
+  // Where the sides of one cell's candidates lie (best_apex).
+  struct Sides {
+    std::size_t left, right;
+  };
+
   void solve_cell(int i, int k) {
     const int n = t_.n;
-    if (t_.forbidden[row_index(n, i, k)] && !(i == 0 && k == n - 1)) {
+    if (t_.forbidden[t_.row_index(i, k)] && !(i == 0 && k == n - 1)) {
       t_.store(i, k, CellBest{});
       return;
     }
@@ -127,27 +137,31 @@ class RowSolver {
   }
 
   CellBest best_apex(int i, int k) const {
-    const std::uint64_t* left_key = t_.row_key.data() + row_start(t_.n, i);   // (i, m): [m - i - 1]
-    const std::uint64_t* right_key = t_.column_key.data() + column_start(k);  // (m, k): [m]
+    // Side (i, m) at row index `left + m`, side (m, k) at column index `right + m` (unsigned:
+    // `left` wraps below zero on row 0, and adding m brings it back).
+    const Sides sides{t_.row_starts[static_cast<std::size_t>(i)] - static_cast<std::size_t>(i + 1),
+                      column_start(k)};
     CellBest best;
     if constexpr (!kPrune) {
-      for (int m = i + 1; m < k; ++m) try_apex(i, m, k, best);
+      for (int m = i + 1; m < k; ++m) try_apex(i, m, k, sides, best);
       return best;
     }
     // The apex of the cell below is often this cell's best too: tried first, it lets the bound
     // discard most other apexes at once.
-    const int seed = k - i > 2 ? t_.apex[row_index(t_.n, i + 1, k)] : kNoApex;
-    if (seed != kNoApex) try_apex(i, seed, k, best);
+    const int seed = k - i > 2 ? t_.apex[t_.row_index(i + 1, k)] : kNoApex;
+    if (seed != kNoApex) try_apex(i, seed, k, sides, best);
+    const std::uint64_t* left_key = t_.row_key.data() + (sides.left + (i + 1));  // from m = i + 1
+    const std::uint64_t* right_key = t_.column_key.data() + sides.right;         // (m, k) at [m]
     for (int m = i + 1; m < k; ++m) {
       m += first_within_bound_(left_key + (m - i - 1), right_key + m, k - m, best.value.key);
-      if (m < k && m != seed) try_apex(i, m, k, best);
+      if (m < k && m != seed) try_apex(i, m, k, sides, best);
     }
     return best;
   }
 
-  void try_apex(int i, int m, int k, CellBest& best) const {
-    const std::size_t left_cell = row_index(t_.n, i, m);
-    const std::size_t right_column = column_start(k) + m;
+  void try_apex(int i, int m, int k, const Sides& sides, CellBest& best) const {
+    const std::size_t left_cell = sides.left + static_cast<std::size_t>(m);
+    const std::size_t right_column = sides.right + static_cast<std::size_t>(m);
     const std::uint64_t left = t_.row_key[left_cell], right = t_.column_key[right_column];
     if constexpr (kPrune) {
       const std::uint64_t bound = std::max(left, right);
@@ -162,7 +176,7 @@ class RowSolver {
     const auto normal_across = [this](int a, int b) { return this->normal_across(a, b); };
     detail::try_apex<kPrune>(
         weight_, polygon_, i, m, k, WeightValue{left, t_.row_area[left_cell]},
-        SideValue{right, t_.column_area[right_column], &t_.row_area[row_index(t_.n, m, k)]},
+        SideValue{right, t_.column_area[right_column], &t_.row_area[t_.row_index(m, k)]},
         normal_across, best);
   }
 
@@ -173,7 +187,7 @@ class RowSolver {
     if (b == a + 1) return polygon_.outside_normals[a];
     if (a == current_row_) return row_normal_[b];
     const auto& p = polygon_.points;
-    return unit_normal(p[a], p[t_.apex[row_index(t_.n, a, b)]], p[b]);
+    return unit_normal(p[a], p[t_.apex[t_.row_index(a, b)]], p[b]);
   }
 
   const HolePolygon& polygon_;
@@ -208,15 +222,21 @@ class HelperThreads {
 
 template <bool kPrune, class Weight>
 std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weight& weight,
-                                          int threads) {
+                                          int threads, const TriangulateOptions& options) {
   Tables tables(polygon);
   const int n = tables.n;
   RowWavefront wavefront(n);
   std::vector<RowSolver<kPrune, Weight>> solvers(
       static_cast<std::size_t>(threads), RowSolver<kPrune, Weight>(polygon, weight, tables));
   std::atomic<int> next_row{n - 3};
+  // A cancel stops the taking of rows; a row once taken is finished, since the rows above it
+  // that were taken before the cancel wait for it.
   auto solve_rows = [&](RowSolver<kPrune, Weight>& solver) {
-    for (int i = next_row--; i >= 0; i = next_row--) solver.solve_row(i, wavefront);
+    while (!cancelled(options)) {
+      const int i = next_row--;
+      if (i < 0) break;
+      solver.solve_row(i, wavefront);
+    }
   };
   {
     std::vector<std::jthread> helpers;
@@ -229,11 +249,11 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
     }
     solve_rows(solvers[0]);
   }
-  if (tables.apex[row_index(n, 0, n - 1)] == kNoApex) return std::nullopt;
+  if (cancelled(options) || tables.apex[tables.row_index(0, n - 1)] == kNoApex) return std::nullopt;
 
   PolygonTriangulation result;
   result.triangles =
-      trace_triangles(n, [&](int i, int k) { return tables.apex[row_index(n, i, k)]; });
+      trace_triangles(n, [&](int i, int k) { return tables.apex[tables.row_index(i, k)]; });
   result.quality = evaluate_triangulation(polygon, result.triangles);
   return result;
 }
@@ -253,8 +273,8 @@ std::optional<PolygonTriangulation> full_search(const HolePolygon& polygon,
   const HelperThreads helpers(automatic ? wanted - 1 : 0);
   const int threads = std::clamp(automatic ? 1 + helpers.count() : wanted, 1, rows);
   return with_weight(options, [&](const auto& weight) {
-    return options.prune ? solve<true>(polygon, weight, threads)
-                         : solve<false>(polygon, weight, threads);
+    return options.prune ? solve<true>(polygon, weight, threads, options)
+                         : solve<false>(polygon, weight, threads, options);
   });
 }
 

@@ -104,6 +104,7 @@ std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polyg
   const std::size_t threshold = options.restricted.above_edges;
   if (threshold > 0 && polygon.points.size() > threshold) {
     if (auto restricted = triangulate_polygon_restricted(polygon, options)) return restricted;
+    if (detail::cancelled(options)) return std::nullopt;
   }
   if (polygon.points.size() > kMaxFullSearchEdges) return std::nullopt;
   return detail::full_search(polygon, options);

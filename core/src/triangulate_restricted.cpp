@@ -57,13 +57,16 @@ ChordSet allowed_chords(const HolePolygon& polygon, const RestrictedSearch& sear
   return set;
 }
 
+// A cancel is noticed within this many chords (well under a millisecond).
+constexpr std::size_t kChordsBetweenCancelChecks = 4096;
+
 template <class Weight>
 std::optional<PolygonTriangulation> solve_restricted(const HolePolygon& polygon,
                                                      const Weight& weight,
-                                                     const RestrictedSearch& search) {
+                                                     const TriangulateOptions& options) {
   const auto& p = polygon.points;
   const int n = static_cast<int>(p.size());
-  ChordSet set = allowed_chords(polygon, search);
+  ChordSet set = allowed_chords(polygon, options.restricted);
   std::unordered_set<std::uint64_t> forbidden;
   for (const auto& [a, b] : polygon.forbidden_chords) {
     forbidden.insert(chord_key(std::min(a, b), std::max(a, b)));
@@ -106,6 +109,7 @@ std::optional<PolygonTriangulation> solve_restricted(const HolePolygon& polygon,
     return detail::unit_normal(p[a], p[apexes[cell]], p[b]);
   };
   for (std::size_t c = 0; c < chords.size(); ++c) {
+    if (c % kChordsBetweenCancelChecks == 0 && detail::cancelled(options)) return std::nullopt;
     const auto [i, k] = chords[c];
     detail::CellBest best;
     for (const int m : up[i]) {
@@ -137,9 +141,8 @@ std::optional<PolygonTriangulation> triangulate_polygon_restricted(
   if (!detail::has_unit_outside_normals(polygon)) {
     return triangulate_polygon_restricted(detail::with_unit_outside_normals(polygon), options);
   }
-  return detail::with_weight(options, [&](const auto& weight) {
-    return solve_restricted(polygon, weight, options.restricted);
-  });
+  return detail::with_weight(
+      options, [&](const auto& weight) { return solve_restricted(polygon, weight, options); });
 }
 
 }  // namespace holefill

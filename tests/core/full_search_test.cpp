@@ -1,11 +1,14 @@
-// The full search on several threads against the same search on one, and the vectorised bound
-// test against a plain loop: the number of threads and the processor must never change which
-// triangulation is chosen.
+// The full search on several threads against the same search on one, and its vectorised pieces
+// (the bound scan, the combination of keys) against plain loops: neither the number of threads
+// nor the processor may change which triangulation is chosen.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <thread>
 
 #include "bound_scan.h"
 #include "holefill/triangulate.h"
@@ -84,6 +87,34 @@ TEST(FullSearch, ThePlainLoopOnThreadsMatchesThePrunedSearchOnOne) {
   }
 }
 
+// A cancel from another thread stops the search between rows, whatever the number of threads
+// (a thread waiting on a row that is never taken would hang here).
+TEST(FullSearch, StopsAndReturnsNothingWhenCancelled) {
+  const HolePolygon polygon = testing::wavy_hole(2000);
+  for (const unsigned threads : {1u, 3u}) {
+    Progress progress;
+    TriangulateOptions options;
+    options.restricted.above_edges = 0;
+    options.threads = threads;
+    options.progress = &progress;
+    std::jthread canceller([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      progress.cancel();
+    });
+    EXPECT_FALSE(triangulate_polygon(polygon, options)) << threads << " threads";
+    EXPECT_TRUE(progress.cancelled());
+  }
+}
+
+TEST(RestrictedSearch, ReturnsNothingWhenCancelled) {
+  Progress progress;
+  progress.cancel();
+  TriangulateOptions options;
+  options.progress = &progress;
+  EXPECT_FALSE(triangulate_polygon_restricted(testing::wavy_hole(1000), options));
+  EXPECT_FALSE(triangulate_polygon(testing::wavy_hole(1000), options));
+}
+
 // The first j with both keys at most `best`, one by one.
 int first_within_bound_by_hand(const std::vector<std::uint64_t>& left,
                                const std::vector<std::uint64_t>& right, std::uint64_t best) {
@@ -113,6 +144,28 @@ TEST(BoundScan, FindsTheFirstApexWithinTheBoundLikeAPlainLoop) {
     EXPECT_EQ(detail::first_within_bound_portable(left.data(), right.data(), count, best),
               expected);
     EXPECT_EQ(fastest(left.data(), right.data(), count, best), expected);
+  }
+}
+
+// combine() packs three lane maxima into a few SIMD instructions: against the lanes one by one.
+TEST(WeightKey, CombineAddsDegenerateCountsAndTakesTheLargerOfEachAngleLane) {
+  std::mt19937_64 rng(13);
+  const std::vector<std::uint64_t> lane_values{0, 1, 0x7FFF, 0x8000, 0xFFFE, 0xFFFF};
+  auto draw_key = [&] {
+    // Degenerate counts stay below 0x8000 (fewer points than kMaxPolygonSize, two sides).
+    std::uint64_t key = (rng() % 0x8000) << weight_key::kDegenerateShift;
+    for (const int shift : {weight_key::kLaneA, weight_key::kLaneB, weight_key::kLaneC}) {
+      key |= (rng() % 2 ? lane_values[rng() % lane_values.size()] : rng() & 0xFFFF) << shift;
+    }
+    return key;
+  };
+  for (int trial = 0; trial < 20000; ++trial) {
+    const std::uint64_t a = draw_key(), b = draw_key();
+    std::uint64_t expected = ((a >> 48) + (b >> 48)) << 48;
+    for (const int shift : {0, 16, 32}) {
+      expected |= std::max((a >> shift) & 0xFFFF, (b >> shift) & 0xFFFF) << shift;
+    }
+    ASSERT_EQ(weight_key::combine(a, b), expected) << std::hex << a << " " << b;
   }
 }
 
