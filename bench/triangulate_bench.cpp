@@ -10,12 +10,13 @@
 namespace holefill::bench {
 namespace {
 
-enum class Search { Full, PlainLoop, Restricted };
+enum class Search { Full, FullOneThread, PlainLoop, Restricted };
 
 void triangulate(benchmark::State& state, WeightKind weight, Search search) {
   const HolePolygon polygon = wavy_hole(static_cast<int>(state.range(0)));
   TriangulateOptions options{weight};
   options.prune = search != Search::PlainLoop;
+  if (search == Search::FullOneThread) options.threads = 1;
   options.restricted.above_edges = 0;  // the full search, whatever the size
   for (auto _ : state) {
     auto result = search == Search::Restricted ? triangulate_polygon_restricted(polygon, options)
@@ -33,6 +34,12 @@ void triangulate(benchmark::State& state, WeightKind weight, Search search) {
 void BM_TriangulateMaxMin(benchmark::State& s) { triangulate(s, WeightKind::MaxMin, Search::Full); }
 void BM_TriangulateLiepa(benchmark::State& s) { triangulate(s, WeightKind::Liepa, Search::Full); }
 void BM_TriangulateArea(benchmark::State& s) { triangulate(s, WeightKind::Area, Search::Full); }
+void BM_TriangulateMaxMinOneThread(benchmark::State& s) {
+  triangulate(s, WeightKind::MaxMin, Search::FullOneThread);
+}
+void BM_TriangulateLiepaOneThread(benchmark::State& s) {
+  triangulate(s, WeightKind::Liepa, Search::FullOneThread);
+}
 void BM_TriangulateMaxMinPlainLoop(benchmark::State& s) {
   triangulate(s, WeightKind::MaxMin, Search::PlainLoop);
 }
@@ -55,6 +62,11 @@ const bool kRegistered = [] {
   sizes(benchmark::RegisterBenchmark("BM_TriangulateLiepa", BM_TriangulateLiepa),
         {50, 100, 200, 400, 500, 800, 2000});
   sizes(benchmark::RegisterBenchmark("BM_TriangulateArea", BM_TriangulateArea),
+        {50, 100, 200, 400, 500, 800, 2000});
+  sizes(
+      benchmark::RegisterBenchmark("BM_TriangulateMaxMinOneThread", BM_TriangulateMaxMinOneThread),
+      {50, 100, 200, 400, 500, 800, 2000});
+  sizes(benchmark::RegisterBenchmark("BM_TriangulateLiepaOneThread", BM_TriangulateLiepaOneThread),
         {50, 100, 200, 400, 500, 800, 2000});
   sizes(
       benchmark::RegisterBenchmark("BM_TriangulateMaxMinPlainLoop", BM_TriangulateMaxMinPlainLoop),

@@ -148,6 +148,11 @@ template <bool kPrune, class Weight, class NormalAcross>
   finish_apex<kPrune>(weight, polygon, i, m, k, key, area, cross, normal_across, best);
 }
 
+// Whether the caller has asked the search to stop (TriangulateOptions::progress).
+inline bool cancelled(const TriangulateOptions& options) {
+  return options.progress != nullptr && options.progress->cancelled();
+}
+
 // Calls solve(weight) with the weight policy options.weight names (weights.h).
 template <class Solve>
 auto with_weight(const TriangulateOptions& options, Solve&& solve) {

@@ -212,6 +212,8 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
     if (progress) progress->set_fraction(0.5 * static_cast<double>(steps) / chosen.size());
   };
   const auto cancelled = [&] { return progress && progress->cancelled(); };
+  TriangulateOptions triangulate = options.triangulate;
+  triangulate.progress = progress;  // a cancel also stops a long dynamic program between rows
   // What a worker throws (std::bad_alloc) stops the others and is rethrown here, the mesh
   // unchanged.
   std::exception_ptr failure;
@@ -219,9 +221,8 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
   auto worker = [&] {
     try {
       for (std::size_t i = next++; i < chosen.size() && !cancelled(); i = next++) {
-        plan_seconds[i] = timed([&] {
-          plans[i] = plan_group(mesh, holes, chosen[i], options.triangulate, options.join);
-        });
+        plan_seconds[i] = timed(
+            [&] { plans[i] = plan_group(mesh, holes, chosen[i], triangulate, options.join); });
         report(++planned);
       }
     } catch (...) {

@@ -14,6 +14,7 @@
 
 #include "dp_step.h"
 #include "holefill/triangulate.h"
+#include "nearest_neighbours.h"
 
 namespace holefill {
 namespace {
@@ -48,29 +49,24 @@ ChordSet allowed_chords(const HolePolygon& polygon, const RestrictedSearch& sear
   for (std::size_t a = 0; a < anchors.size(); ++a) {
     for (std::size_t b = a + 1; b < anchors.size(); ++b) set.add(anchors[a], anchors[b]);
   }
-  const auto& p = polygon.points;
-  std::vector<std::pair<double, int>> by_distance;
+  const auto neighbours = detail::nearest_neighbours(polygon.points, search.nearest_neighbours);
   for (int i = 0; i < n; ++i) {
-    by_distance.clear();
-    for (int j = 0; j < n; ++j) {
-      if (j != i) by_distance.emplace_back((p[i] - p[j]).sqrnorm(), j);
-    }
-    const int nearest =
-        std::min<int>(search.nearest_neighbours, static_cast<int>(by_distance.size()));
-    std::partial_sort(by_distance.begin(), by_distance.begin() + nearest, by_distance.end());
-    for (int r = 0; r < nearest; ++r) set.add(i, by_distance[r].second);
+    for (const int j : neighbours[i]) set.add(i, j);
   }
   set.add(0, n - 1);  // the whole polygon, the root cell
   return set;
 }
 
+// A cancel is noticed within this many chords (well under a millisecond).
+constexpr std::size_t kChordsBetweenCancelChecks = 4096;
+
 template <class Weight>
 std::optional<PolygonTriangulation> solve_restricted(const HolePolygon& polygon,
                                                      const Weight& weight,
-                                                     const RestrictedSearch& search) {
+                                                     const TriangulateOptions& options) {
   const auto& p = polygon.points;
   const int n = static_cast<int>(p.size());
-  ChordSet set = allowed_chords(polygon, search);
+  ChordSet set = allowed_chords(polygon, options.restricted);
   std::unordered_set<std::uint64_t> forbidden;
   for (const auto& [a, b] : polygon.forbidden_chords) {
     forbidden.insert(chord_key(std::min(a, b), std::max(a, b)));
@@ -113,6 +109,7 @@ std::optional<PolygonTriangulation> solve_restricted(const HolePolygon& polygon,
     return detail::unit_normal(p[a], p[apexes[cell]], p[b]);
   };
   for (std::size_t c = 0; c < chords.size(); ++c) {
+    if (c % kChordsBetweenCancelChecks == 0 && detail::cancelled(options)) return std::nullopt;
     const auto [i, k] = chords[c];
     detail::CellBest best;
     for (const int m : up[i]) {
@@ -144,9 +141,8 @@ std::optional<PolygonTriangulation> triangulate_polygon_restricted(
   if (!detail::has_unit_outside_normals(polygon)) {
     return triangulate_polygon_restricted(detail::with_unit_outside_normals(polygon), options);
   }
-  return detail::with_weight(options, [&](const auto& weight) {
-    return solve_restricted(polygon, weight, options.restricted);
-  });
+  return detail::with_weight(
+      options, [&](const auto& weight) { return solve_restricted(polygon, weight, options); });
 }
 
 }  // namespace holefill

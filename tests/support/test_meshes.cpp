@@ -96,6 +96,18 @@ std::vector<Point> random_loop(int n, std::mt19937& rng, double noise, double wa
   return points;
 }
 
+HolePolygon wavy_hole(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  HolePolygon polygon;
+  polygon.points = random_loop(n, rng, 0.3, 0.35);
+  for (int i = 0; i < n; ++i) {
+    const Point mid = (polygon.points[i] + polygon.points[(i + 1) % n]) * 0.5;
+    polygon.outside_normals.push_back(
+        (Point(0, 0, 1) + 0.4 * Point(mid[0], mid[1], 0)).normalized());
+  }
+  return polygon;
+}
+
 bool original_part_unchanged(const Mesh& before, const Mesh& after) {
   if (after.n_vertices() < before.n_vertices() || after.n_faces() < before.n_faces()) {
     return false;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "holefill/mesh.h"
+#include "holefill/triangulate.h"
 
 namespace holefill::testing {
 
@@ -25,6 +26,11 @@ Mesh without_faces(const Mesh& mesh, const std::function<bool(const Point&)>& re
 
 // A random simple polygon: points on a wavy, noisy loop around the z axis (radius ~1).
 std::vector<Point> random_loop(int n, std::mt19937& rng, double noise = 0.2, double waviness = 0.3);
+
+// A hole's polygon on a wavy, noisy loop of n points (random_loop from this seed), with the
+// surrounding surface leaning outwards as around a hole in a curved mesh: what the benchmarks
+// (and the tests that compare searches) triangulate.
+HolePolygon wavy_hole(int n, unsigned seed = 42);
 
 // Every vertex position and every face's vertex list of `before` is present, unchanged, at
 // the same index in `after`.

@@ -14,6 +14,7 @@
 #include "holefill/holes.h"
 #include "holefill/mesh.h"
 #include "holefill/patch.h"
+#include "holefill/progress.h"
 #include "holefill/weights.h"
 
 namespace holefill {
@@ -47,6 +48,14 @@ struct TriangulateOptions {
   // plain O(n^3) loop, kept as the reference the fast path is tested against.
   bool prune = true;
   RestrictedSearch restricted{};
+  // Threads for the full search: 0 chooses (one for small holes, where threads cost more than
+  // they save, else every core that other searches running at the same time leave free); n uses
+  // n. The triangulation is the same whatever the number.
+  unsigned threads = 0;
+  // Checked between rows of the full search and between batches of the restricted one's chords:
+  // once cancelled, the search stops and returns nothing (progress->cancelled() tells that from
+  // "no triangulation"). Not owned; null: never cancelled.
+  const Progress* progress = nullptr;
 };
 
 // The dynamic program stores apexes in 16 bits: holes must have fewer boundary edges than this.

@@ -29,6 +29,10 @@
 #include <cstdint>
 #include <string>
 
+#if defined(__SSE2__) && defined(__x86_64__)
+#include <emmintrin.h>
+#endif
+
 namespace holefill {
 
 enum class WeightKind { MaxMin, Liepa, Area };
@@ -72,15 +76,28 @@ inline std::uint64_t min_angle_lane(double tangent) {
 inline std::uint64_t dihedral_lane(double chord) { return quantize_unit(0.5 * chord); }
 inline double chord_of_angle(double angle) { return 2.0 * std::sin(0.5 * angle); }
 
-// The combination of two keys: degenerate counts add, angle lanes take the larger. Lanes a
-// weight never sets are zero, and each weight combines only its own (faster in the inner loop).
-inline std::uint64_t combine(std::uint64_t a, std::uint64_t b) {
-  const std::uint64_t degenerate = (a >> kDegenerateShift) + (b >> kDegenerateShift);
+// The larger of a's and b's value in each angle lane (the degenerate lane comes out 0).
+inline std::uint64_t max_angle_lanes(std::uint64_t a, std::uint64_t b) {
+  constexpr std::uint64_t kAngleLanes = (std::uint64_t{1} << kDegenerateShift) - 1;
+#if defined(__SSE2__) && defined(__x86_64__)
+  // All three lanes at once: max(x, y) = y + (x - y, saturated at 0), lane by lane.
+  const __m128i x = _mm_cvtsi64_si128(static_cast<long long>(a & kAngleLanes));
+  const __m128i y = _mm_cvtsi64_si128(static_cast<long long>(b & kAngleLanes));
+  return static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_add_epi16(y, _mm_subs_epu16(x, y))));
+#else
   std::uint64_t lanes = 0;
   for (const int shift : {kLaneA, kLaneB, kLaneC}) {
     lanes |= std::max((a >> shift) & kLaneMax, (b >> shift) & kLaneMax) << shift;
   }
-  return (degenerate << kDegenerateShift) | lanes;
+  return lanes & kAngleLanes;
+#endif
+}
+
+// The combination of two keys: degenerate counts add, angle lanes take the larger. Lanes a
+// weight never sets are zero, and each weight combines only its own (faster in the inner loop).
+inline std::uint64_t combine(std::uint64_t a, std::uint64_t b) {
+  const std::uint64_t degenerate = (a >> kDegenerateShift) + (b >> kDegenerateShift);
+  return (degenerate << kDegenerateShift) | max_angle_lanes(a, b);
 }
 inline std::uint64_t combine_lane_a(std::uint64_t a, std::uint64_t b) {
   constexpr std::uint64_t kMask = kLaneMax << kLaneA;

@@ -1,0 +1,281 @@
+// The full search on several threads. Rows run bottom-up: cell (i, k) needs (i, m), m < k, from
+// its own row and (m, k), m > i, from the rows below, and row i + 1 needs them too, so row i can
+// follow row i + 1 cell by cell. Each thread takes the next row down and follows the row below
+// it (RowWavefront); a row's cells cost a little more than the row below's, so a following row
+// rarely waits. Each cell is computed exactly as on one thread, from the same inputs, so the
+// triangulation does not depend on the number of threads (tests compare).
+#include "full_search.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include "bound_scan.h"
+#include "dp_step.h"
+#include "row_wavefront.h"
+
+namespace holefill::detail {
+namespace {
+
+// Below this many edges a search takes under a few milliseconds on one core, and starting and
+// feeding threads costs more than it saves (bench/README.md).
+constexpr int kParallelMinEdges = 120;
+
+// Cell (i, k), 0 <= i < k < n, of the triangular tables, stored row by row (row i holds
+// k = i+1 ... n-1) or column by column (column k holds i = 0 ... k-1).
+std::size_t cell_count(int n) {
+  return static_cast<std::size_t>(n) * static_cast<std::size_t>(n - 1) / 2;
+}
+std::size_t row_start(int n, int i) {
+  const std::size_t row = static_cast<std::size_t>(i);
+  return row * static_cast<std::size_t>(n) - row * (row + 1) / 2;
+}
+std::size_t column_start(int k) {
+  const std::size_t column = static_cast<std::size_t>(k);
+  return column * (column - 1) / 2;
+}
+
+// The area rounded down to a float: a lower bound that fits in half the space.
+float area_lower_bound(double area) {
+  const float rounded = static_cast<float>(area);
+  return static_cast<double>(rounded) <= area ? rounded : std::nextafter(rounded, 0.0f);
+}
+
+constexpr std::uint16_t kNoApex = 0xFFFF;  // apex of an infeasible cell
+
+// The dynamic program's tables, in 30 bytes per cell: by rows the value (key and area) and the
+// apex; by columns the key again and a lower bound of the area, so that the apex loop reads both
+// sides sequentially; a bit for forbidden chords.
+struct Tables {
+  explicit Tables(const HolePolygon& polygon)
+      : n(static_cast<int>(polygon.points.size())),
+        row_key(cell_count(n), 0),
+        column_key(cell_count(n), 0),
+        row_area(cell_count(n), 0.0),
+        column_area(cell_count(n), 0.0f),
+        apex(cell_count(n), 0),  // polygon edges keep 0 (never read)
+        forbidden(cell_count(n), false),
+        row_starts(static_cast<std::size_t>(n)) {
+    for (int i = 0; i < n; ++i) row_starts[i] = row_start(n, i);
+    for (const auto& [a, b] : polygon.forbidden_chords) {
+      if (a == b || std::min(a, b) < 0 || std::max(a, b) >= n) continue;  // not a chord
+      forbidden[row_index(std::min(a, b), std::max(a, b))] = true;
+    }
+  }
+
+  // Where cell (i, k) lies in the row-by-row tables.
+  std::size_t row_index(int i, int k) const {
+    return row_starts[static_cast<std::size_t>(i)] + static_cast<std::size_t>(k - i - 1);
+  }
+
+  void store(int i, int k, const CellBest& best) {
+    const std::size_t cell = row_index(i, k), column = column_start(k) + i;
+    const bool feasible = best.apex >= 0;
+    row_key[cell] = column_key[column] = feasible ? best.value.key : weight_key::kInfeasible;
+    row_area[cell] = feasible ? best.value.area : INFINITY;
+    column_area[column] = feasible ? area_lower_bound(best.value.area) : INFINITY;
+    apex[cell] = feasible ? static_cast<std::uint16_t>(best.apex) : kNoApex;
+  }
+
+  int n;
+  std::vector<std::uint64_t> row_key, column_key;
+  std::vector<double> row_area;
+  std::vector<float> column_area;
+  std::vector<std::uint16_t> apex;
+  std::vector<bool> forbidden;          // written before the threads start
+  std::vector<std::size_t> row_starts;  // row_start(n, i), looked up rather than recomputed
+};
+
+// Solves whole rows of the tables; one per thread. With kPrune a candidate is skipped when the
+// larger of its two sides' keys already exceeds the best key (a lower bound of its value,
+// weights.h) or ties it with no smaller area, then as soon as a partial value cannot beat the
+// best (try_apex). The values computed are the same either way, so the result is the plain
+// loop's (kPrune = false), and tests check it.
+template <bool kPrune, class Weight>
+class RowSolver {
+ public:
+  RowSolver(const HolePolygon& polygon, const Weight& weight, Tables& tables)
+      : polygon_(polygon),
+        weight_(weight),
+        t_(tables),
+        row_normal_(polygon.points.size()),
+        first_within_bound_(fastest_bound_scan()) {}
+
+  // Cells (i, i+2) ... (i, n-1), each once row i + 1 has finished its column.
+  void solve_row(int i, RowWavefront& wavefront) {
+    current_row_ = i;
+    int below_finished = -1;
+    for (int k = i + 2; k < t_.n; ++k) {
+      if (k - i > 2 && k > below_finished) below_finished = wavefront.wait_for(i + 1, k);
+      solve_cell(i, k);
+      wavefront.publish(i, k);
+    }
+  }
+
+ private:
+  // Where the sides of one cell's candidates lie (best_apex).
+  struct Sides {
+    std::size_t left, right;
+  };
+
+  void solve_cell(int i, int k) {
+    const int n = t_.n;
+    if (t_.forbidden[t_.row_index(i, k)] && !(i == 0 && k == n - 1)) {
+      t_.store(i, k, CellBest{});
+      return;
+    }
+    const CellBest best = best_apex(i, k);
+    t_.store(i, k, best);
+    if (best.apex >= 0) {
+      row_normal_[k] =
+          unit_normal(polygon_.points[i], polygon_.points[best.apex], polygon_.points[k]);
+    }
+  }
+
+  CellBest best_apex(int i, int k) const {
+    // Side (i, m) at row index `left + m`, side (m, k) at column index `right + m` (unsigned:
+    // `left` wraps below zero on row 0, and adding m brings it back).
+    const Sides sides{t_.row_starts[static_cast<std::size_t>(i)] - static_cast<std::size_t>(i + 1),
+                      column_start(k)};
+    CellBest best;
+    if constexpr (!kPrune) {
+      for (int m = i + 1; m < k; ++m) try_apex(i, m, k, sides, best);
+      return best;
+    }
+    // The apex of the cell below is often this cell's best too: tried first, it lets the bound
+    // discard most other apexes at once.
+    const int seed = k - i > 2 ? t_.apex[t_.row_index(i + 1, k)] : kNoApex;
+    if (seed != kNoApex) try_apex(i, seed, k, sides, best);
+    const std::uint64_t* left_key = t_.row_key.data() + (sides.left + (i + 1));  // from m = i + 1
+    const std::uint64_t* right_key = t_.column_key.data() + sides.right;         // (m, k) at [m]
+    for (int m = i + 1; m < k; ++m) {
+      m += first_within_bound_(left_key + (m - i - 1), right_key + m, k - m, best.value.key);
+      if (m < k && m != seed) try_apex(i, m, k, sides, best);
+    }
+    return best;
+  }
+
+  void try_apex(int i, int m, int k, const Sides& sides, CellBest& best) const {
+    const std::size_t left_cell = sides.left + static_cast<std::size_t>(m);
+    const std::size_t right_column = sides.right + static_cast<std::size_t>(m);
+    const std::uint64_t left = t_.row_key[left_cell], right = t_.column_key[right_column];
+    if constexpr (kPrune) {
+      const std::uint64_t bound = std::max(left, right);
+      if (bound > best.value.key) return;
+      if (bound == best.value.key &&
+          best.excludes(bound, t_.row_area[left_cell] + t_.column_area[right_column], m)) {
+        return;
+      }
+    } else {
+      if (left == weight_key::kInfeasible || right == weight_key::kInfeasible) return;
+    }
+    const auto normal_across = [this](int a, int b) { return this->normal_across(a, b); };
+    detail::try_apex<kPrune>(
+        weight_, polygon_, i, m, k, WeightValue{left, t_.row_area[left_cell]},
+        SideValue{right, t_.column_area[right_column], &t_.row_area[t_.row_index(m, k)]},
+        normal_across, best);
+  }
+
+  // Normal of the triangle chosen for sub-polygon (a, b), or of the mesh face across (a, b).
+  // The current row's are kept, where the row reads them over and over; others are recomputed
+  // from their apex.
+  Point normal_across(int a, int b) const {
+    if (b == a + 1) return polygon_.outside_normals[a];
+    if (a == current_row_) return row_normal_[b];
+    const auto& p = polygon_.points;
+    return unit_normal(p[a], p[t_.apex[t_.row_index(a, b)]], p[b]);
+  }
+
+  const HolePolygon& polygon_;
+  const Weight& weight_;
+  Tables& t_;
+  std::vector<Point> row_normal_;  // row_normal_[k]: of cell (current_row_, k)
+  int current_row_ = -1;
+  BoundScan first_within_bound_;
+};
+
+// Helper threads that the searches running at the same time share: one fewer than the cores in
+// all, so that several searches at once (fill_holes plans holes on every core) do not
+// oversubscribe the machine.
+class HelperThreads {
+ public:
+  explicit HelperThreads(int wanted) {
+    int spare = spare_.load();
+    do {
+      count_ = std::clamp(wanted, 0, spare);
+    } while (!spare_.compare_exchange_weak(spare, spare - count_));
+  }
+  ~HelperThreads() { spare_ += count_; }
+  HelperThreads(const HelperThreads&) = delete;
+  HelperThreads& operator=(const HelperThreads&) = delete;
+  int count() const { return count_; }
+
+ private:
+  static inline std::atomic<int> spare_{
+      std::max(1, static_cast<int>(std::thread::hardware_concurrency())) - 1};
+  int count_ = 0;
+};
+
+template <bool kPrune, class Weight>
+std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weight& weight,
+                                          int threads, const TriangulateOptions& options) {
+  Tables tables(polygon);
+  const int n = tables.n;
+  RowWavefront wavefront(n);
+  std::vector<RowSolver<kPrune, Weight>> solvers(
+      static_cast<std::size_t>(threads), RowSolver<kPrune, Weight>(polygon, weight, tables));
+  std::atomic<int> next_row{n - 3};
+  // A cancel stops the taking of rows; a row once taken is finished, since the rows above it
+  // that were taken before the cancel wait for it.
+  auto solve_rows = [&](RowSolver<kPrune, Weight>& solver) {
+    while (!cancelled(options)) {
+      const int i = next_row--;
+      if (i < 0) break;
+      solver.solve_row(i, wavefront);
+    }
+  };
+  {
+    std::vector<std::jthread> helpers;
+    for (int t = 1; t < threads; ++t) {
+      try {
+        helpers.emplace_back(solve_rows, std::ref(solvers[static_cast<std::size_t>(t)]));
+      } catch (const std::system_error&) {
+        break;  // no more threads to be had: rows are taken as they come, fewer threads suffice
+      }
+    }
+    solve_rows(solvers[0]);
+  }
+  if (cancelled(options) || tables.apex[tables.row_index(0, n - 1)] == kNoApex) return std::nullopt;
+
+  PolygonTriangulation result;
+  result.triangles =
+      trace_triangles(n, [&](int i, int k) { return tables.apex[tables.row_index(i, k)]; });
+  result.quality = evaluate_triangulation(polygon, result.triangles);
+  return result;
+}
+
+}  // namespace
+
+std::optional<PolygonTriangulation> full_search(const HolePolygon& polygon,
+                                                const TriangulateOptions& options) {
+  const int n = static_cast<int>(polygon.points.size());
+  const int rows = std::max(1, n - 2);
+  const bool automatic = options.threads == 0;
+  const int wanted =
+      automatic
+          ? (n < kParallelMinEdges ? 1 : static_cast<int>(std::thread::hardware_concurrency()))
+          : static_cast<int>(std::min<unsigned>(options.threads, rows));
+  // Threads asked for explicitly are the caller's business; automatic ones share the cores.
+  const HelperThreads helpers(automatic ? wanted - 1 : 0);
+  const int threads = std::clamp(automatic ? 1 + helpers.count() : wanted, 1, rows);
+  return with_weight(options, [&](const auto& weight) {
+    return options.prune ? solve<true>(polygon, weight, threads, options)
+                         : solve<false>(polygon, weight, threads, options);
+  });
+}
+
+}  // namespace holefill::detail

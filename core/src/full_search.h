@@ -1,0 +1,17 @@
+// The full search: the dynamic program of triangulate.h over every chord, O(n^3) time and
+// 30 bytes per (i, k) cell, on one thread or several (the result is the same either way).
+#pragma once
+
+#include <optional>
+
+#include "holefill/triangulate.h"
+
+namespace holefill::detail {
+
+// The optimal triangulation under options.weight over all chords, or nothing when the forbidden
+// chords leave none. The polygon needs at least 3 and fewer than kMaxPolygonSize points, and
+// unit (or zero) outside normals. Runs on options.threads threads (0: as many as pay off).
+std::optional<PolygonTriangulation> full_search(const HolePolygon& polygon,
+                                                const TriangulateOptions& options);
+
+}  // namespace holefill::detail

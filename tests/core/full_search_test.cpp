@@ -1,0 +1,173 @@
+// The full search on several threads against the same search on one, and its vectorised pieces
+// (the bound scan, the combination of keys) against plain loops: neither the number of threads
+// nor the processor may change which triangulation is chosen.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <thread>
+
+#include "bound_scan.h"
+#include "holefill/triangulate.h"
+#include "test_meshes.h"
+
+namespace holefill {
+namespace {
+
+// A planar regular polygon: many triangulations tie on every angle, so apex ties decide.
+HolePolygon regular_polygon(int n) {
+  HolePolygon polygon;
+  for (int i = 0; i < n; ++i) {
+    polygon.points.emplace_back(std::cos(2.0 * M_PI * i / n), std::sin(2.0 * M_PI * i / n), 0.0);
+  }
+  polygon.outside_normals.assign(n, Point(0, 0, 1));
+  return polygon;
+}
+
+std::vector<HolePolygon> test_holes() {
+  std::mt19937 rng(97);
+  std::vector<HolePolygon> holes;
+  for (const int n : {3, 4, 5, 9, 17, 33, 64, 121}) {
+    holes.push_back(testing::wavy_hole(n, 2 * n));
+    holes.push_back(testing::wavy_hole(n, 2 * n + 1));
+    std::bernoulli_distribution pick(0.2);
+    for (int i = 0; i < n; ++i) {
+      for (int k = i + 2; k < n; ++k) {
+        if (pick(rng)) holes.back().forbidden_chords.emplace_back(i, k);
+      }
+    }
+  }
+  for (const int n : {12, 40, 96, 130}) holes.push_back(regular_polygon(n));
+  // Every point on one line but the last: nearly everything is degenerate.
+  HolePolygon flat = regular_polygon(30);
+  for (int i = 0; i + 1 < 30; ++i) flat.points[i] = Point(i, 0.0, 0.0);
+  holes.push_back(flat);
+  return holes;
+}
+
+TEST(FullSearch, GivesTheSameTriangulationOnAnyNumberOfThreads) {
+  for (const auto& polygon : test_holes()) {
+    for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}) {
+      for (const double fold_limit : {kDefaultFoldLimit, M_PI}) {
+        TriangulateOptions serial{weight, fold_limit};
+        serial.threads = 1;
+        const auto expected = triangulate_polygon(polygon, serial);
+        // More threads than this machine's cores, too: rows then wait on descheduled rows.
+        for (const unsigned threads : {0u, 2u, 7u}) {
+          TriangulateOptions parallel = serial;
+          parallel.threads = threads;
+          const auto result = triangulate_polygon(polygon, parallel);
+          ASSERT_EQ(result.has_value(), expected.has_value());
+          if (!result) continue;
+          EXPECT_EQ(result->triangles, expected->triangles)
+              << to_string(weight) << ", n = " << polygon.points.size() << ", fold " << fold_limit
+              << ", " << threads << " threads";
+          EXPECT_EQ(result->quality.area, expected->quality.area);
+        }
+      }
+    }
+  }
+}
+
+TEST(FullSearch, ThePlainLoopOnThreadsMatchesThePrunedSearchOnOne) {
+  for (int trial = 0; trial < 4; ++trial) {
+    const HolePolygon polygon = testing::wavy_hole(40 + 30 * trial, trial);
+    for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa}) {
+      TriangulateOptions pruned{weight}, plain{weight};
+      pruned.threads = 1;
+      plain.prune = false;
+      plain.threads = 3;
+      EXPECT_EQ(triangulate_polygon(polygon, plain)->triangles,
+                triangulate_polygon(polygon, pruned)->triangles)
+          << to_string(weight) << ", n = " << polygon.points.size();
+    }
+  }
+}
+
+// A cancel from another thread stops the search between rows, whatever the number of threads
+// (a thread waiting on a row that is never taken would hang here).
+TEST(FullSearch, StopsAndReturnsNothingWhenCancelled) {
+  const HolePolygon polygon = testing::wavy_hole(2000);
+  for (const unsigned threads : {1u, 3u}) {
+    Progress progress;
+    TriangulateOptions options;
+    options.restricted.above_edges = 0;
+    options.threads = threads;
+    options.progress = &progress;
+    std::jthread canceller([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      progress.cancel();
+    });
+    EXPECT_FALSE(triangulate_polygon(polygon, options)) << threads << " threads";
+    EXPECT_TRUE(progress.cancelled());
+  }
+}
+
+TEST(RestrictedSearch, ReturnsNothingWhenCancelled) {
+  Progress progress;
+  progress.cancel();
+  TriangulateOptions options;
+  options.progress = &progress;
+  EXPECT_FALSE(triangulate_polygon_restricted(testing::wavy_hole(1000), options));
+  EXPECT_FALSE(triangulate_polygon(testing::wavy_hole(1000), options));
+}
+
+// The first j with both keys at most `best`, one by one.
+int first_within_bound_by_hand(const std::vector<std::uint64_t>& left,
+                               const std::vector<std::uint64_t>& right, std::uint64_t best) {
+  for (std::size_t j = 0; j < left.size(); ++j) {
+    if (left[j] <= best && right[j] <= best) return static_cast<int>(j);
+  }
+  return static_cast<int>(left.size());
+}
+
+TEST(BoundScan, FindsTheFirstApexWithinTheBoundLikeAPlainLoop) {
+  std::mt19937_64 rng(11);
+  const detail::BoundScan fastest = detail::fastest_bound_scan();
+  // Keys from a few values (ties with the bound) and from the whole range (the top bit set:
+  // unsigned order, not signed), at every length around the vector width.
+  const std::vector<std::uint64_t> few{0, 5, 6, 7, 0x8000000000000000ull, ~0ull};
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int count = trial % 40;
+    const bool from_few = trial % 2 == 0;
+    auto draw = [&] { return from_few ? few[rng() % few.size()] : rng(); };
+    std::vector<std::uint64_t> left(count), right(count);
+    for (int j = 0; j < count; ++j) {
+      left[j] = draw();
+      right[j] = draw();
+    }
+    const std::uint64_t best = draw();
+    const int expected = first_within_bound_by_hand(left, right, best);
+    EXPECT_EQ(detail::first_within_bound_portable(left.data(), right.data(), count, best),
+              expected);
+    EXPECT_EQ(fastest(left.data(), right.data(), count, best), expected);
+  }
+}
+
+// combine() packs three lane maxima into a few SIMD instructions: against the lanes one by one.
+TEST(WeightKey, CombineAddsDegenerateCountsAndTakesTheLargerOfEachAngleLane) {
+  std::mt19937_64 rng(13);
+  const std::vector<std::uint64_t> lane_values{0, 1, 0x7FFF, 0x8000, 0xFFFE, 0xFFFF};
+  auto draw_key = [&] {
+    // Degenerate counts stay below 0x8000 (fewer points than kMaxPolygonSize, two sides).
+    std::uint64_t key = (rng() % 0x8000) << weight_key::kDegenerateShift;
+    for (const int shift : {weight_key::kLaneA, weight_key::kLaneB, weight_key::kLaneC}) {
+      key |= (rng() % 2 ? lane_values[rng() % lane_values.size()] : rng() & 0xFFFF) << shift;
+    }
+    return key;
+  };
+  for (int trial = 0; trial < 20000; ++trial) {
+    const std::uint64_t a = draw_key(), b = draw_key();
+    std::uint64_t expected = ((a >> 48) + (b >> 48)) << 48;
+    for (const int shift : {0, 16, 32}) {
+      expected |= std::max((a >> shift) & 0xFFFF, (b >> shift) & 0xFFFF) << shift;
+    }
+    ASSERT_EQ(weight_key::combine(a, b), expected) << std::hex << a << " " << b;
+  }
+}
+
+}  // namespace
+}  // namespace holefill
