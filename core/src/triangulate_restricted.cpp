@@ -141,8 +141,8 @@ std::optional<PolygonTriangulation> solve_restricted(const HolePolygon& polygon,
 std::optional<PolygonTriangulation> triangulate_polygon_restricted(
     const HolePolygon& polygon, const TriangulateOptions& options) {
   if (polygon.points.size() < 3 || polygon.points.size() >= kMaxPolygonSize) return std::nullopt;
-  if (!detail::has_unit_outside_normals(polygon)) {
-    return triangulate_polygon_restricted(detail::with_unit_outside_normals(polygon), options);
+  if (!detail::is_canonical(polygon)) {
+    return triangulate_polygon_restricted(detail::canonical(polygon), options);
   }
   return detail::with_weight(options, [&](const auto& weight) {
     return solve_restricted(polygon, weight, options.restricted);

@@ -27,6 +27,9 @@ struct HolePolygon {
   // Chords (i, k), i < k, that must not be used: they already exist as mesh edges, or join two
   // occurrences of the same vertex.
   std::vector<std::pair<int, int>> forbidden_chords;
+  // Triangles (i, m, k), i < m < k, that must not be used either (e.g. because they cut through
+  // the mesh: fill.h's intersection avoidance).
+  std::vector<std::array<int, 3>> forbidden_triangles;
 };
 
 // The restricted search for large holes (triangulate_restricted.cpp): chords inside pockets of
