@@ -124,6 +124,12 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
         fill.refinement_note = "refinement undone: " + problem;
       } else {
         fill.self_intersections = intersections;
+        if (fill.refinement.stopped_at_vertex_cap) {
+          fill.refinement_note = "refinement stopped at its cap of " +
+                                 std::to_string(fill.refinement.vertex_cap) + " new vertices (" +
+                                 std::to_string(std::lround(options.refine.max_density)) +
+                                 " times what the boundary's density asks for)";
+        }
       }
       fill.patch.stage = Stage::Refined;
       break;

@@ -81,6 +81,12 @@ struct PolygonTriangulation {
 std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polygon,
                                                         const TriangulateOptions& options);
 
+// The chords (i, k), i < k, the restricted search may use on this polygon (forbidden chords not
+// removed), the closing edge (0, n-1) included. Each vertex joins few of them (pockets of
+// anchors of anchors, not every pair of anchors), so the search's work grows about linearly.
+std::vector<std::pair<int, int>> restricted_chords(const HolePolygon& polygon,
+                                                   const RestrictedSearch& search);
+
 // The restricted search alone (whatever the hole's size); nothing when the allowed chords hold no
 // valid triangulation.
 std::optional<PolygonTriangulation> triangulate_polygon_restricted(
