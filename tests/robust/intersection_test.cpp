@@ -120,7 +120,7 @@ TEST(PatchIntersections, TheCliSaysWhichHoleIntersectsAndExitsWithFive) {
   EXPECT_NE(json.find("\"self_intersections\": "), std::string::npos);
   EXPECT_EQ(json.find("\"self_intersections\": 0"), std::string::npos) << json;
   // The avoidance tried and could not help: the pin crosses every patch.
-  EXPECT_NE(json.find("\"intersection_avoidance\": {\"first_pairs\": "), std::string::npos);
+  EXPECT_NE(json.find("\"intersection_avoidance\": {"), std::string::npos) << json;
   EXPECT_NE(json.find("\"changed\": false"), std::string::npos) << json;
   std::filesystem::remove_all(dir);
 }
