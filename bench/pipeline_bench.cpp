@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cad_parts.h"
 #include "holefill/fill.h"
 #include "holefill/io.h"
 #include "test_meshes.h"
@@ -100,15 +101,38 @@ void stage_scaling(benchmark::State& state, Stage last) {
 void BM_RefineScaling(benchmark::State& s) { stage_scaling(s, Stage::Refined); }
 void BM_SmoothScaling(benchmark::State& s) { stage_scaling(s, Stage::Smoothed); }
 
-void BM_FillAllHoles(benchmark::State& state) {
-  const Mesh original = load_mesh(std::string(HOLEFILL_ASSETS_DIR) + "/" + kAssets[state.range(0)]);
+// The whole pipeline on every hole, with the intersection avoidance on (range(1) = 1) or off.
+void fill_all_holes(benchmark::State& state, const Mesh& original) {
   const auto holes = find_holes(original);
+  FillOptions options;
+  options.avoid_intersections = state.range(1) != 0;
+  std::size_t changed = 0;
   for (auto _ : state) {
     Mesh mesh = original;
-    auto fills = fill_holes(mesh, holes, FillOptions{});
+    auto fills = fill_holes(mesh, holes, options);
+    changed = 0;
+    for (const auto& fill : fills) changed += fill.avoidance.changed ? 1 : 0;
     benchmark::DoNotOptimize(fills);
   }
+  state.counters["avoided"] = static_cast<double>(changed);
+}
+
+void BM_FillAllHoles(benchmark::State& state) {
+  fill_all_holes(state,
+                 load_mesh(std::string(HOLEFILL_ASSETS_DIR) + "/" + kAssets[state.range(0)]));
   state.SetLabel(kAssets[state.range(0)]);
+}
+
+// A bent sheet (wall 0.05) with a hole of radius range(0) / 100 across the outside of the bend,
+// which the weight's best triangulation cuts through (tests/robust/cad_intersection_test.cpp).
+void BM_FillBentSheet(benchmark::State& state) {
+  const double radius = static_cast<double>(state.range(0)) / 100.0;
+  const Mesh sheet = testing::surface_of(
+      {testing::grid_lines({{0.05, 1}, {0.1, 10}}), testing::grid_lines({{0.05, 1}, {0.1, 10}}),
+       testing::grid_lines({{0.1, 10}}), [](int i, int j, int) { return i == 0 || j == 0; }});
+  fill_all_holes(state, testing::without_faces_where(sheet, [&](const Point& c, const Point& n) {
+                   return (n[0] < -0.5 || n[1] < -0.5) && (c - Point(0, 0, 0.5)).norm() < radius;
+                 }));
 }
 
 BENCHMARK(BM_StageTriangulate)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond);
@@ -122,7 +146,8 @@ void hole_radii(benchmark::internal::Benchmark* bench) {
 
 BENCHMARK(BM_RefineScaling)->Apply(hole_radii);
 BENCHMARK(BM_SmoothScaling)->Apply(hole_radii);
-BENCHMARK(BM_FillAllHoles)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FillAllHoles)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FillBentSheet)->ArgsProduct({{20, 45}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace holefill::bench

@@ -37,6 +37,13 @@ Json fill_json(const HoleFill& fill) {
   if (!fill.refinement_note.empty()) entry["refinement_note"] = fill.refinement_note;
   if (!fill.smoothing_note.empty()) entry["smoothing_note"] = fill.smoothing_note;
   entry["self_intersections"] = fill.self_intersections;
+  const IntersectionAvoidance& avoidance = fill.avoidance;
+  entry["intersection_avoidance"] = {{"first_pairs", avoidance.first_pairs},
+                                     {"rounds", avoidance.rounds},
+                                     {"changed", avoidance.changed}};
+  if (avoidance.changed) {
+    entry["intersection_avoidance"]["weight"] = to_string(avoidance.weight);
+  }
   entry["new_vertices"] = s.new_vertices;
   entry["new_faces"] = s.new_faces;
   entry["min_angle_deg"] = s.min_angle_deg;  // not finite (no triangle): dumped as null
@@ -51,7 +58,8 @@ Json fill_json(const HoleFill& fill) {
   entry["seconds"] = {{"triangulate", fill.times.triangulate_seconds},
                       {"refine", fill.times.refine_seconds},
                       {"smooth", fill.times.smooth_seconds},
-                      {"checks", fill.times.check_seconds}};
+                      {"checks", fill.times.check_seconds},
+                      {"avoid_intersections", fill.times.avoid_seconds}};
   return entry;
 }
 

@@ -3,6 +3,8 @@
 // beats the cell's best so far.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "holefill/triangulate.h"
@@ -42,21 +44,28 @@ inline SmallestAngle smallest_angle(const Point& a, const Point& b, const Point&
   return {false, dot};
 }
 
-// The chords below stand for angles only between unit normals, as HolePolygon asks; these make
-// sure of it for callers that pass other lengths (a zero normal stays zero: nothing known).
-inline bool has_unit_outside_normals(const HolePolygon& polygon) {
+// The chords below stand for angles only between unit normals, as HolePolygon asks, and
+// forbidden triangles are looked up by binary search; these make sure of both for callers that
+// pass other normals or an unsorted list (a zero normal stays zero: nothing known).
+inline bool is_canonical(const HolePolygon& polygon) {
   for (const auto& normal : polygon.outside_normals) {
     const double length2 = normal.sqrnorm();
     if (length2 != 0.0 && std::abs(length2 - 1.0) > 1e-12) return false;
   }
-  return true;
+  return std::is_sorted(polygon.forbidden_triangles.begin(), polygon.forbidden_triangles.end());
 }
-inline HolePolygon with_unit_outside_normals(HolePolygon polygon) {
+inline HolePolygon canonical(HolePolygon polygon) {
   for (auto& normal : polygon.outside_normals) {
     const double length = normal.norm();
     normal = length > 0.0 && length < INFINITY ? normal / length : Point(0.0, 0.0, 0.0);
   }
+  std::sort(polygon.forbidden_triangles.begin(), polygon.forbidden_triangles.end());
   return polygon;
+}
+
+inline bool is_forbidden_triangle(const HolePolygon& polygon, int i, int m, int k) {
+  const auto& list = polygon.forbidden_triangles;
+  return !list.empty() && std::binary_search(list.begin(), list.end(), std::array<int, 3>{i, m, k});
 }
 
 // The chord |normal - other| standing for the dihedral angle against what lies across an edge:
@@ -95,6 +104,7 @@ template <bool kPrune, class Weight, class NormalAcross>
 [[gnu::noinline]] void finish_apex(const Weight& weight, const HolePolygon& polygon, int i, int m,
                                    int k, std::uint64_t key, double area, const Point& cross,
                                    const NormalAcross& normal_across, CellBest& best) {
+  if (is_forbidden_triangle(polygon, i, m, k)) return;
   const double twice_area = cross.norm();
   const SmallestAngle angle =
       smallest_angle(polygon.points[i], polygon.points[m], polygon.points[k], twice_area);

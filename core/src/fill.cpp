@@ -9,10 +9,12 @@
 #include <system_error>
 #include <thread>
 
+#include "avoid_intersections.h"
 #include "face_grid.h"
 #include "holefill/attributes.h"
 #include "holefill/loop_groups.h"
 #include "patch_intersections.h"
+#include "safe_scale.h"
 #include "stage_undo.h"
 
 namespace holefill {
@@ -70,18 +72,25 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
   if (fill.failed()) return false;
   switch (fill.stage()) {
     case Stage::Original: {
-      TriangulateHoleResult result;
-      fill.times.triangulate_seconds += timed([&] {
-        result = plan ? apply_triangulation(mesh, hole, *plan)
-                      : triangulate_hole(mesh, hole, options.triangulate);
-      });
+      PlannedTriangulation planned;
+      fill.times.triangulate_seconds += timed(
+          [&] { planned = plan ? *plan : plan_triangulation(mesh, hole, options.triangulate); });
+      if (options.avoid_intersections) {
+        fill.times.avoid_seconds = timed([&] {
+          planned = detail::avoid_intersections(mesh, hole, std::move(planned), options.triangulate,
+                                                index, fill.avoidance, fill.self_intersections);
+        });
+      }
+      TriangulateHoleResult result = apply_triangulation(mesh, hole, planned);
       if (!result.patch) {
         fill.failure = result.failure;
         return false;
       }
       fill.patch = std::move(*result.patch);
-      fill.times.check_seconds +=
-          timed([&] { fill.self_intersections = count_intersections(mesh, fill.patch, index); });
+      if (!options.avoid_intersections) {
+        fill.times.check_seconds +=
+            timed([&] { fill.self_intersections = count_intersections(mesh, fill.patch, index); });
+      }
       break;
     }
     case Stage::Triangulated: {
@@ -119,6 +128,12 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
         fill.refinement_note = "refinement undone: " + problem;
       } else {
         fill.self_intersections = intersections;
+        if (fill.refinement.stopped_at_vertex_cap) {
+          fill.refinement_note = "refinement stopped at its cap of " +
+                                 std::to_string(fill.refinement.vertex_cap) + " new vertices (" +
+                                 std::to_string(std::lround(options.refine.max_density)) +
+                                 " times what the boundary's density asks for)";
+        }
       }
       fill.patch.stage = Stage::Refined;
       break;
@@ -160,48 +175,33 @@ HoleFill fill_planned(Mesh& mesh, const Hole& hole, const FillOptions& options,
   return fill;
 }
 
-}  // namespace
-
-std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch) {
-  return count_intersections(mesh, patch, nullptr);
+// Runs work() with the mesh at a safe scale (safe_scale.h); returns its result and whether the
+// mesh was scaled (then the stats measured meanwhile need measuring again).
+template <class Work>
+auto at_safe_scale(Mesh& mesh, Work&& work) {
+  bool scaled = false;
+  auto result = [&] {
+    const detail::SafeScale safe(mesh);
+    scaled = safe.scaled();
+    return work();
+  }();
+  return std::pair(std::move(result), scaled);
 }
 
-bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options) {
-  return advance_with(mesh, hole, fill, options, nullptr, nullptr);
+void measure_again(const Mesh& mesh, HoleFill& fill) {
+  if (fill.stage() != Stage::Original) fill.stats = patch_stats(mesh, fill.patch);
 }
 
-HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options) {
-  return fill_planned(mesh, hole, options, nullptr, nullptr);
+// Loops joined by bridges are triangulated with constraints of their own (bridge.h), which the
+// intersection avoidance's solves would not keep: their plan stays as it is.
+FillOptions without_avoidance(FillOptions options) {
+  options.avoid_intersections = false;
+  return options;
 }
 
-bool HoleSelection::includes(const Hole& hole) const {
-  if (max_boundary_edges && hole.size() > max_boundary_edges) return false;
-  return hole_ids.empty() || std::find(hole_ids.begin(), hole_ids.end(), hole.id) != hole_ids.end();
-}
-
-HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
-                           const FillOptions& options) {
-  JoinedLoops joined;
-  const double seconds =
-      timed([&] { joined = plan_joined_loops(mesh, loops, options.triangulate, options.join); });
-  HoleFill fill = fill_planned(mesh, joined.polygon, options, &joined.plan, nullptr);
-  fill.times.triangulate_seconds += seconds;
-  fill.boundary_edges = 0;
-  for (const Hole* loop : loops) {
-    fill.boundary_edges += loop->size();
-    if (loop != loops.front()) fill.joined_holes.push_back(loop->id);
-  }
-  return fill;
-}
-
-std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
-                                 const FillOptions& options, const HoleSelection& selection,
-                                 Progress* progress) {
-  std::vector<LoopGroup> chosen;
-  for (auto& group : group_loops(mesh, holes, find_islands(mesh, holes, options.islands),
-                                 selection.bridges, options.join)) {
-    if (selects(selection, group, holes)) chosen.push_back(std::move(group));
-  }
+std::vector<HoleFill> fill_groups(Mesh& mesh, const std::vector<Hole>& holes,
+                                  const std::vector<LoopGroup>& chosen, const FillOptions& options,
+                                  Progress* progress) {
   // The dynamic programs only read the mesh and dominate the time: run them on every core,
   // largest holes first (holes come sorted by size), then add the patches one by one.
   std::vector<GroupPlan> plans(chosen.size());
@@ -251,8 +251,9 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
   detail::FaceGrid index = detail::FaceGrid::of_mesh(mesh);
   std::vector<HoleFill> fills;
   for (std::size_t i = 0; i < chosen.size() && !cancelled(); ++i) {
-    HoleFill& fill =
-        fills.emplace_back(fill_planned(mesh, plans[i].polygon, options, &plans[i].plan, &index));
+    HoleFill& fill = fills.emplace_back(fill_planned(
+        mesh, plans[i].polygon, chosen[i].holes.size() > 1 ? without_avoidance(options) : options,
+        &plans[i].plan, &index));
     report(chosen.size() + i + 1);
     fill.times.triangulate_seconds += plan_seconds[i];
     fill.boundary_edges = chosen[i].boundary_edges(holes);
@@ -260,6 +261,63 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
     for (const auto f : fill.patch.faces) index.add(f.idx(), detail::box_of(mesh, f));
   }
   return fills;
+}
+
+}  // namespace
+
+std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch) {
+  return count_intersections(mesh, patch, nullptr);
+}
+
+bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options) {
+  const auto [advanced, scaled] = at_safe_scale(
+      mesh, [&] { return advance_with(mesh, hole, fill, options, nullptr, nullptr); });
+  if (scaled) measure_again(mesh, fill);
+  return advanced;
+}
+
+HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options) {
+  auto [fill, scaled] =
+      at_safe_scale(mesh, [&] { return fill_planned(mesh, hole, options, nullptr, nullptr); });
+  if (scaled) measure_again(mesh, fill);
+  return fill;
+}
+
+bool HoleSelection::includes(const Hole& hole) const {
+  if (max_boundary_edges && hole.size() > max_boundary_edges) return false;
+  return hole_ids.empty() || std::find(hole_ids.begin(), hole_ids.end(), hole.id) != hole_ids.end();
+}
+
+HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
+                           const FillOptions& options) {
+  JoinedLoops joined;
+  const double seconds =
+      timed([&] { joined = plan_joined_loops(mesh, loops, options.triangulate, options.join); });
+  HoleFill fill =
+      fill_planned(mesh, joined.polygon, without_avoidance(options), &joined.plan, nullptr);
+  fill.times.triangulate_seconds += seconds;
+  fill.boundary_edges = 0;
+  for (const Hole* loop : loops) {
+    fill.boundary_edges += loop->size();
+    if (loop != loops.front()) fill.joined_holes.push_back(loop->id);
+  }
+  return fill;
+}
+
+std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
+                                 const FillOptions& options, const HoleSelection& selection,
+                                 Progress* progress) {
+  std::vector<LoopGroup> chosen;
+  for (auto& group : group_loops(mesh, holes, find_islands(mesh, holes, options.islands),
+                                 selection.bridges, options.join)) {
+    if (selects(selection, group, holes)) chosen.push_back(std::move(group));
+  }
+  auto [fills, scaled] =
+      at_safe_scale(mesh, [&] { return fill_groups(mesh, holes, chosen, options, progress); });
+  if (scaled) {
+    for (auto& fill : fills) measure_again(mesh, fill);
+  }
+  return std::move(fills);
 }
 
 }  // namespace holefill

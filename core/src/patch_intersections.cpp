@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include "triangle_intersection.h"
 
@@ -75,6 +76,52 @@ std::vector<IntersectingPair> triangle_intersections(
     }
   }
   return pairs;
+}
+
+std::vector<std::pair<int, int>> chords_through_mesh(const Mesh& mesh,
+                                                     const std::vector<Point>& points,
+                                                     const FaceGrid* around) {
+  const int n = static_cast<int>(points.size());
+  Box reach;
+  for (const auto& p : points) reach.add(p);
+  std::optional<FaceGrid> own;
+  if (!around) around = &own.emplace(FaceGrid::of_mesh(mesh));
+  std::vector<int> faces = around->near(reach);
+  double magnitude = reach.magnitude();
+  std::vector<std::pair<int, Box>> boxes;
+  for (const int f : faces) {
+    boxes.emplace_back(static_cast<int>(boxes.size()), box_of(mesh, FaceHandle(f)));
+    magnitude = std::max(magnitude, boxes.back().second.magnitude());
+  }
+  const double scale = scale_for(magnitude);
+  std::vector<std::optional<Triangle3>> triangles;
+  for (const int f : faces) {
+    if (mesh.valence(FaceHandle(f)) != 3) {
+      triangles.emplace_back();
+      continue;
+    }
+    auto fv = mesh.cfv_iter(FaceHandle(f));
+    triangles.push_back(
+        triangle_from({mesh.point(*fv), mesh.point(*++fv), mesh.point(*++fv)}, scale));
+  }
+  const FaceGrid grid(std::move(boxes));
+  std::vector<std::pair<int, int>> chords;
+  for (int i = 0; i < n; ++i) {
+    for (int k = i + 2; k < n; ++k) {
+      if (i == 0 && k == n - 1) continue;
+      Box segment;
+      segment.add(points[i]);
+      segment.add(points[k]);
+      for (const int o : grid.near(segment)) {
+        if (triangles[o] &&
+            segment_enters_triangle(points[i] * scale, points[k] * scale, *triangles[o])) {
+          chords.emplace_back(i, k);
+          break;
+        }
+      }
+    }
+  }
+  return chords;
 }
 
 std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch& patch,

@@ -32,6 +32,13 @@ std::vector<IntersectingPair> triangle_intersections(
     const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
     const std::vector<bool>& in_patch, const FaceGrid* around);
 
+// The chords (i, k), i < k, between non-neighbouring points of a hole's polygon whose segment
+// passes through the interior of a face of the mesh (any triangle with such a side intersects
+// it). `around` as for triangle_intersections.
+std::vector<std::pair<int, int>> chords_through_mesh(const Mesh& mesh,
+                                                     const std::vector<Point>& points,
+                                                     const FaceGrid* around);
+
 // triangle_intersections for a patch already in the mesh; `triangle` indexes patch.faces.
 std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch& patch,
                                                   const FaceGrid* around);

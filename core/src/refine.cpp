@@ -1,5 +1,7 @@
 #include "holefill/refine.h"
 
+#include <algorithm>
+#include <cmath>
 #include <unordered_set>
 
 namespace holefill {
@@ -49,6 +51,19 @@ std::unordered_set<int> face_ids(const Patch& patch) {
   return ids;
 }
 
+// RefineOptions::max_density's cap on the new vertices of this patch; 0 when there is none (no
+// cap asked for, or no boundary scale to measure the density by). Needs the boundary scales.
+std::size_t vertex_cap(Mesh& mesh, const Patch& patch, double max_density) {
+  PatchTags tags(mesh);
+  double area = 0.0, scale = 0.0;
+  for (const auto f : patch.faces) area += mesh.calc_face_area(f);
+  for (const auto v : patch.boundary) scale += mesh.property(tags.scale, v);
+  scale /= static_cast<double>(std::max<std::size_t>(1, patch.boundary.size()));
+  const double cap = max_density * area / (scale * scale);
+  if (!(max_density > 0.0) || !(cap < 1e15)) return 0;
+  return std::max<std::size_t>(static_cast<std::size_t>(std::ceil(cap)), patch.boundary.size());
+}
+
 }  // namespace
 
 void assign_boundary_scales(Mesh& mesh, const Patch& patch) {
@@ -80,6 +95,7 @@ RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options
   assign_boundary_scales(mesh, patch);
   std::unordered_set<int> patch_faces = face_ids(patch);
   const double tau = options.tau;
+  result.vertex_cap = vertex_cap(mesh, patch, options.max_density);
 
   for (int round = 0; round < kMaxRefineRounds; ++round) {
     std::size_t splits_now = 0;
@@ -87,6 +103,10 @@ RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options
     for (const auto f : faces) {
       if (patch.faces.size() + 2 > options.max_patch_faces) {
         result.stopped_at_face_limit = true;
+        break;
+      }
+      if (result.vertex_cap && patch.new_vertices.size() >= result.vertex_cap) {
+        result.stopped_at_vertex_cap = true;
         break;
       }
       VertexHandle corner[3];
@@ -127,6 +147,7 @@ RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options
     result.splits += splits_now;
     if (splits_now == 0 || result.stopped_at_face_limit) break;
     result.swaps += relax_edges(mesh, patch_faces, patch.faces);
+    if (result.stopped_at_vertex_cap) break;
   }
   if (options.remesh) result.remeshing = remesh_patch(mesh, patch, options.remeshing);
   patch.stage = Stage::Refined;

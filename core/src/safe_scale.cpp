@@ -31,8 +31,8 @@ SafeScale::~SafeScale() {
   if (!scaled()) return;
   for (const auto v : mesh_.vertices()) {
     const auto i = static_cast<std::size_t>(v.idx());
-    mesh_.set_point(v, i < original_.size() ? original_[i]
-                                            : times_power_of_two(mesh_.point(v), exponent_));
+    mesh_.set_point(
+        v, i < original_.size() ? original_[i] : times_power_of_two(mesh_.point(v), exponent_));
   }
 }
 

@@ -50,26 +50,6 @@ bool cross_properly2(const Point2& a, const Point2& b, const Point2& c, const Po
   return opposite(cross2(c, d, a), cross2(c, d, b)) && opposite(cross2(a, b, c), cross2(a, b, d));
 }
 
-// The segment [s0, s1] passes through the triangle's interior.
-bool segment_enters_triangle(const Point& s0, const Point& s1, const Triangle3& t) {
-  const double d0 = OpenMesh::dot(t.normal, s0 - t.corner[0]);
-  const double d1 = OpenMesh::dot(t.normal, s1 - t.corner[0]);
-  const double tolerance = kPlaneTolerance * std::max(t.size, (s1 - s0).norm());
-  if ((d0 > tolerance && d1 > tolerance) || (d0 < -tolerance && d1 < -tolerance)) return false;
-  const auto axes = projection_axes(t.normal);
-  const Point2 a = project(t.corner[0], axes), b = project(t.corner[1], axes),
-               c = project(t.corner[2], axes);
-  if (std::abs(d0) <= tolerance && std::abs(d1) <= tolerance) {
-    const Point2 p = project(s0, axes), q = project(s1, axes);
-    const Point2 middle{(p.x + q.x) / 2, (p.y + q.y) / 2};
-    return strictly_inside2(p, a, b, c) || strictly_inside2(q, a, b, c) ||
-           strictly_inside2(middle, a, b, c) || cross_properly2(p, q, a, b) ||
-           cross_properly2(p, q, b, c) || cross_properly2(p, q, c, a);
-  }
-  const double along = std::clamp(d0 / (d0 - d1), 0.0, 1.0);
-  return strictly_inside2(project(s0 + along * (s1 - s0), axes), a, b, c);
-}
-
 // Direction u lies strictly inside the wedge spanned by v1 and v2 (an angle below pi), all in
 // the plane with this normal.
 bool inside_wedge(const Point& u, const Point& v1, const Point& v2, const Point& normal) {
@@ -117,6 +97,25 @@ bool meet_beyond_shared_corner(const Triangle3& t1, const Triangle3& t2, int i, 
 }
 
 }  // namespace
+
+bool segment_enters_triangle(const Point& s0, const Point& s1, const Triangle3& t) {
+  const double d0 = OpenMesh::dot(t.normal, s0 - t.corner[0]);
+  const double d1 = OpenMesh::dot(t.normal, s1 - t.corner[0]);
+  const double tolerance = kPlaneTolerance * std::max(t.size, (s1 - s0).norm());
+  if ((d0 > tolerance && d1 > tolerance) || (d0 < -tolerance && d1 < -tolerance)) return false;
+  const auto axes = projection_axes(t.normal);
+  const Point2 a = project(t.corner[0], axes), b = project(t.corner[1], axes),
+               c = project(t.corner[2], axes);
+  if (std::abs(d0) <= tolerance && std::abs(d1) <= tolerance) {
+    const Point2 p = project(s0, axes), q = project(s1, axes);
+    const Point2 middle{(p.x + q.x) / 2, (p.y + q.y) / 2};
+    return strictly_inside2(p, a, b, c) || strictly_inside2(q, a, b, c) ||
+           strictly_inside2(middle, a, b, c) || cross_properly2(p, q, a, b) ||
+           cross_properly2(p, q, b, c) || cross_properly2(p, q, c, a);
+  }
+  const double along = std::clamp(d0 / (d0 - d1), 0.0, 1.0);
+  return strictly_inside2(project(s0 + along * (s1 - s0), axes), a, b, c);
+}
 
 std::optional<Triangle3> triangle_from(const std::array<Point, 3>& corners, double scale) {
   Triangle3 t;

@@ -23,6 +23,10 @@ struct Triangle3 {
 // degenerate at that scale.
 std::optional<Triangle3> triangle_from(const std::array<Point, 3>& corners, double scale = 1.0);
 
+// The segment [s0, s1] passes through the triangle's interior (touching its sides or corners
+// does not count).
+bool segment_enters_triangle(const Point& s0, const Point& s1, const Triangle3& t);
+
 // Two non-degenerate triangles intersect (corners at the same position count as shared). The
 // tests use tolerances relative to the triangles' size, so the answer does not depend on scale.
 bool triangles_intersect(const Triangle3& t1, const Triangle3& t2);

@@ -98,8 +98,8 @@ TriangulationQuality evaluate_triangulation(const HolePolygon& polygon,
 std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polygon,
                                                         const TriangulateOptions& options) {
   if (polygon.points.size() < 3 || polygon.points.size() >= kMaxPolygonSize) return std::nullopt;
-  if (!detail::has_unit_outside_normals(polygon)) {
-    return triangulate_polygon(detail::with_unit_outside_normals(polygon), options);
+  if (!detail::is_canonical(polygon)) {
+    return triangulate_polygon(detail::canonical(polygon), options);
   }
   const std::size_t threshold = options.restricted.above_edges;
   if (threshold > 0 && polygon.points.size() > threshold) {

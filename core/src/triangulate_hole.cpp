@@ -78,7 +78,15 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
   }
   const bool restricted =
       options.restricted.above_edges > 0 && hole.size() > options.restricted.above_edges;
-  if (hole.size() >= kMaxPolygonSize || (hole.size() > kMaxFullSearchEdges && !restricted)) {
+  if (hole.size() >= kMaxPolygonSize) {
+    result.failure = "the hole has " + std::to_string(hole.size()) +
+                     " boundary edges, more than the dynamic program can index (at most " +
+                     std::to_string(kMaxPolygonSize - 1) +
+                     ", the restricted search for large holes included); leave it out with "
+                     "--max-boundary";
+    return result;
+  }
+  if (hole.size() > kMaxFullSearchEdges && !restricted) {
     result.failure = "the hole has " + std::to_string(hole.size()) +
                      " boundary edges, too many for the full dynamic program (at most " +
                      std::to_string(std::min(kMaxFullSearchEdges, kMaxPolygonSize - 1)) +

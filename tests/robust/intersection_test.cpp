@@ -119,6 +119,9 @@ TEST(PatchIntersections, TheCliSaysWhichHoleIntersectsAndExitsWithFive) {
                          std::istreambuf_iterator<char>());
   EXPECT_NE(json.find("\"self_intersections\": "), std::string::npos);
   EXPECT_EQ(json.find("\"self_intersections\": 0"), std::string::npos) << json;
+  // The avoidance tried and could not help: the pin crosses every patch.
+  EXPECT_NE(json.find("\"intersection_avoidance\": {"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"changed\": false"), std::string::npos) << json;
   std::filesystem::remove_all(dir);
 }
 
@@ -240,7 +243,8 @@ TEST(PatchIntersections, RemeshingThatWouldCrossTheMeshIsUndoneAndTheRefinementK
     FillOptions triangulate_only = plain;
     triangulate_only.last_stage = Stage::Triangulated;
     const HoleFill triangulated = fill_hole(unguarded, loops[0], triangulate_only);
-    if (triangulated.self_intersections) continue;
+    // The needle must not change the triangulation the remeshed patch was found from.
+    if (triangulated.self_intersections || triangulated.avoidance.changed) continue;
     Mesh refined_only = before;
     const HoleFill refined_again = fill_hole(refined_only, loops[0], plain);
     if (!refined_again.refinement_note.empty() || refined_again.self_intersections) continue;
@@ -257,6 +261,57 @@ TEST(PatchIntersections, RemeshingThatWouldCrossTheMeshIsUndoneAndTheRefinementK
     return;
   }
   FAIL() << "no remeshed edge leaves room for a body between the two surfaces";
+}
+
+// An octahedron of a given size with its last face missing.
+Mesh octahedron_without_a_face(double size) {
+  Mesh mesh;
+  const Point corners[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  VertexHandle v[6];
+  for (int i = 0; i < 6; ++i) v[i] = mesh.add_vertex(size * corners[i]);
+  const int faces[7][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                           {2, 0, 5}, {1, 2, 5}, {3, 1, 5}};
+  for (const auto& f : faces) mesh.add_face(v[f[0]], v[f[1]], v[f[2]]);
+  return mesh;
+}
+
+TEST(PatchIntersections, CoordinatesNearTheLargestDoublesAreSafe) {
+  // Issue 17: at |x| = 8.5e153 squared lengths overflow; the intersection grid's margin became
+  // infinite and a cell index NaN, and the grid was written out of bounds (SIGSEGV). At 1e200
+  // and 1e-300 every triangle looked degenerate and the hole was refused. Any scale now gives
+  // the unit octahedron's patch, scaled (the fill runs at a safe power-of-two scale).
+  const Mesh unit = octahedron_without_a_face(1.0);
+  const auto unit_holes = find_holes(unit);
+  Mesh unit_filled = unit;
+  const auto unit_fills = fill_holes(unit_filled, unit_holes, {});
+  ASSERT_EQ(unit_fills.size(), 1u);
+  ASSERT_FALSE(unit_fills[0].failed());
+  for (const double size : {8.5e153, 1e200, 1e300, 1e-300}) {
+    const Mesh before = octahedron_without_a_face(size);
+    const auto holes = find_holes(before);
+    ASSERT_EQ(holes.size(), 1u);
+    Mesh mesh = before;
+    const auto fills = fill_holes(mesh, holes, {});
+    ASSERT_EQ(fills.size(), 1u);
+    EXPECT_FALSE(fills[0].failed()) << size << ": " << fills[0].failure;
+    EXPECT_EQ(fills[0].self_intersections, 0u) << size;
+    EXPECT_TRUE(original_part_unchanged(before, mesh)) << size;
+    EXPECT_TRUE(is_oriented_manifold(mesh)) << size;
+    EXPECT_TRUE(find_holes(mesh).empty()) << size;
+    ASSERT_EQ(mesh.n_vertices(), unit_filled.n_vertices()) << size;
+    ASSERT_EQ(mesh.n_faces(), unit_filled.n_faces()) << size;
+    for (const auto f : mesh.faces()) {
+      auto a = mesh.cfv_iter(f);
+      auto b = unit_filled.cfv_iter(FaceHandle(f.idx()));
+      for (int c = 0; c < 3; ++c, ++a, ++b) EXPECT_EQ(a->idx(), b->idx()) << size;
+    }
+    for (const auto v : mesh.vertices()) {
+      const Point expected = unit_filled.point(v) * size;
+      for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_NEAR(mesh.point(v)[axis] / size, expected[axis] / size, 1e-12) << size;
+      }
+    }
+  }
 }
 
 }  // namespace

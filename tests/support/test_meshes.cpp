@@ -62,6 +62,12 @@ Mesh make_grid(int n, const std::function<double(double, double)>& height) {
 }
 
 Mesh without_faces(const Mesh& mesh, const std::function<bool(const Point&)>& remove) {
+  return without_faces_where(mesh,
+                             [&](const Point& centroid, const Point&) { return remove(centroid); });
+}
+
+Mesh without_faces_where(const Mesh& mesh,
+                         const std::function<bool(const Point&, const Point&)>& remove) {
   Mesh cut;
   for (const auto v : mesh.vertices()) cut.add_vertex(mesh.point(v));
   for (const auto f : mesh.faces()) {
@@ -71,7 +77,7 @@ Mesh without_faces(const Mesh& mesh, const std::function<bool(const Point&)>& re
       corners.push_back(v);
       centroid += mesh.point(v) / 3.0;
     }
-    if (!remove(centroid)) cut.add_face(corners);
+    if (!remove(centroid, mesh.calc_face_normal(f))) cut.add_face(corners);
   }
   return cut;
 }

@@ -24,6 +24,10 @@ Mesh grid_with_square_holes(int n);
 // their indices (unreferenced ones stay, isolated).
 Mesh without_faces(const Mesh& mesh, const std::function<bool(const Point&)>& remove);
 
+// The same, deciding by the face's centroid and unit normal.
+Mesh without_faces_where(const Mesh& mesh,
+                         const std::function<bool(const Point&, const Point&)>& remove);
+
 // A random simple polygon: points on a wavy, noisy loop around the z axis (radius ~1).
 std::vector<Point> random_loop(int n, std::mt19937& rng, double noise = 0.2, double waviness = 0.3);
 

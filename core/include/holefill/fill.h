@@ -26,6 +26,20 @@ struct FillOptions {
   Stage last_stage = Stage::Smoothed;  // fill_hole stops after this stage
   IslandOptions islands;               // fill_holes fills each hole with its islands (islands.h)
   JoinOptions join;                    // how loops filled together are joined (bridge.h)
+  // Re-triangulate a hole whose best triangulation intersects the mesh or itself, forbidding the
+  // triangles that do (IntersectionAvoidance). Off: the weight's best is always kept.
+  bool avoid_intersections = true;
+};
+
+// What the intersection avoidance did for one hole: the weight's best triangulation had
+// first_pairs intersecting pairs; `rounds` more solves of the dynamic program were made, each
+// forbidding the triangles found intersecting, first with the chosen weight, then with the
+// others; `changed` when an intersection-free triangulation (of weight `weight`) replaced it.
+struct IntersectionAvoidance {
+  std::size_t first_pairs = 0;
+  int rounds = 0;
+  bool changed = false;
+  WeightKind weight = WeightKind::MaxMin;
 };
 
 struct StageTimes {
@@ -33,6 +47,7 @@ struct StageTimes {
   double refine_seconds = 0.0;
   double smooth_seconds = 0.0;
   double check_seconds = 0.0;  // self-intersection and degeneracy checks after the stages
+  double avoid_seconds = 0.0;  // re-triangulating to avoid intersections (first check included)
 };
 
 // One hole's progress through the pipeline.
@@ -52,6 +67,7 @@ struct HoleFill {
   // along shared vertices and edges, after the last stage run. Stages that would make a patch
   // that did not intersect the mesh intersect it are undone (and say so in their note).
   std::size_t self_intersections = 0;
+  IntersectionAvoidance avoidance;
 
   Stage stage() const { return patch.stage; }
   bool failed() const { return !failure.empty(); }

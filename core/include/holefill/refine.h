@@ -19,6 +19,12 @@ struct RefineOptions {
   double tau = std::sqrt(2.0);  // density control factor; 1 <= tau <= sqrt(2) looks right
   // Safety net for absurd inputs: refinement stops (and says so) past this many patch faces.
   std::size_t max_patch_faces = 2'000'000;
+  // Refinement stops (and says so) at this many times the new vertices the boundary's density
+  // calls for (the patch's area over the mean boundary scale sigma squared): at tau = sqrt 2 the
+  // bundled meshes' patches get 0.6-0.75 per sigma^2 of area, each doubling of tau about
+  // quadruples that (31 at tau = 8), so the cap leaves tau up to about 8 alone and bounds the
+  // work of larger ones (tau 1000 on a 4-edge hole ran 300 s). 0: no cap.
+  double max_density = 32.0;
   // Not in the paper: remesh the refined patch toward valence 6 (see remesh.h).
   bool remesh = false;
   RemeshOptions remeshing;
@@ -28,6 +34,8 @@ struct RefineResult {
   std::size_t splits = 0;
   std::size_t swaps = 0;
   bool stopped_at_face_limit = false;
+  std::size_t vertex_cap = 0;  // RefineOptions::max_density's cap for this patch (0: none)
+  bool stopped_at_vertex_cap = false;
   RemeshResult remeshing;  // all zero unless RefineOptions::remesh
 };
 

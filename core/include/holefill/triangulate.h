@@ -28,6 +28,9 @@ struct HolePolygon {
   // Chords (i, k), i < k, that must not be used: they already exist as mesh edges, or join two
   // occurrences of the same vertex.
   std::vector<std::pair<int, int>> forbidden_chords;
+  // Triangles (i, m, k), i < m < k, that must not be used either (e.g. because they cut through
+  // the mesh: fill.h's intersection avoidance).
+  std::vector<std::array<int, 3>> forbidden_triangles;
 };
 
 // The restricted search for large holes (triangulate_restricted.cpp): chords inside pockets of
@@ -86,6 +89,12 @@ struct PolygonTriangulation {
 // most kMaxFullSearchEdges points.
 std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polygon,
                                                         const TriangulateOptions& options);
+
+// The chords (i, k), i < k, the restricted search may use on this polygon (forbidden chords not
+// removed), the closing edge (0, n-1) included. Each vertex joins few of them (pockets of
+// anchors of anchors, not every pair of anchors), so the search's work grows about linearly.
+std::vector<std::pair<int, int>> restricted_chords(const HolePolygon& polygon,
+                                                   const RestrictedSearch& search);
 
 // The restricted search alone (whatever the hole's size); nothing when the allowed chords hold no
 // valid triangulation.

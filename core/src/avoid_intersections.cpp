@@ -1,0 +1,107 @@
+#include "avoid_intersections.h"
+
+#include <optional>
+#include <set>
+
+#include "patch_intersections.h"
+
+namespace holefill::detail {
+namespace {
+
+// Solves of the dynamic program after the first: with the chosen weight, then with each other.
+constexpr int kRoundsWithChosenWeight = 12;
+constexpr int kRoundsWithOtherWeight = 6;
+
+std::vector<WeightKind> weights_in_order(WeightKind chosen) {
+  std::vector<WeightKind> order{chosen};
+  for (const auto other : {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}) {
+    if (other != chosen) order.push_back(other);
+  }
+  return order;
+}
+
+class Checker {
+ public:
+  Checker(const Mesh& mesh, const HolePolygon& polygon, const FaceGrid* around)
+      : mesh_(mesh), polygon_(polygon), around_(around) {}
+
+  std::vector<IntersectingPair> pairs(const PolygonTriangulation& triangulation) {
+    std::vector<std::array<Point, 3>> corners;
+    for (const auto& t : triangulation.triangles) {
+      corners.push_back({polygon_.points[t[0]], polygon_.points[t[1]], polygon_.points[t[2]]});
+    }
+    return triangle_intersections(mesh_, corners, {}, grid());
+  }
+
+ private:
+  // The mesh's grid: the caller's, or one made on the first round that needs it.
+  const FaceGrid* grid() {
+    if (around_ || checks_++ == 0) return around_;
+    own_.emplace(FaceGrid::of_mesh(mesh_));
+    around_ = &*own_;
+    return around_;
+  }
+
+  const Mesh& mesh_;
+  const HolePolygon& polygon_;
+  const FaceGrid* around_;
+  std::optional<FaceGrid> own_;
+  int checks_ = 0;
+};
+
+// Forbids the triangles of `triangulation` that take part in `pairs`: a triangle crossing the
+// mesh crosses it in any triangulation; of two patch triangles crossing each other, both go.
+void forbid(const PolygonTriangulation& triangulation, const std::vector<IntersectingPair>& pairs,
+            std::set<std::array<int, 3>>& forbidden) {
+  for (const auto& pair : pairs) {
+    forbidden.insert(triangulation.triangles[pair.triangle]);
+    if (pair.other_triangle >= 0) forbidden.insert(triangulation.triangles[pair.other_triangle]);
+  }
+}
+
+}  // namespace
+
+PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
+                                         PlannedTriangulation plan,
+                                         const TriangulateOptions& options, const FaceGrid* around,
+                                         IntersectionAvoidance& report, std::size_t& pairs) {
+  report = {};
+  pairs = 0;
+  if (!plan.triangulation) return plan;
+  HolePolygon polygon = hole_polygon(mesh, hole);
+  Checker checker(mesh, polygon, around);
+  std::vector<IntersectingPair> found = checker.pairs(*plan.triangulation);
+  pairs = report.first_pairs = found.size();
+  if (found.empty()) return plan;
+
+  // Chords through the mesh are forbidden at once: every triangle with such a side intersects.
+  for (const auto& chord : chords_through_mesh(mesh, polygon.points, around)) {
+    polygon.forbidden_chords.push_back(chord);
+  }
+  std::set<std::array<int, 3>> forbidden;
+  PolygonTriangulation current = *plan.triangulation;
+  for (const WeightKind weight : weights_in_order(options.weight)) {
+    TriangulateOptions with = options;
+    with.weight = weight;
+    const int rounds = weight == options.weight ? kRoundsWithChosenWeight : kRoundsWithOtherWeight;
+    for (int round = 0; round < rounds; ++round) {
+      forbid(current, found, forbidden);
+      polygon.forbidden_triangles.assign(forbidden.begin(), forbidden.end());
+      auto next = triangulate_polygon(polygon, with);
+      ++report.rounds;
+      if (!next || next->quality.degenerate > 0) break;
+      found = checker.pairs(*next);
+      current = std::move(*next);
+      if (found.empty()) {
+        pairs = 0;
+        report.changed = true;
+        report.weight = weight;
+        plan.triangulation = std::move(current);
+        return plan;
+      }
+    }
+  }
+  return plan;
+}
+
+}  // namespace holefill::detail

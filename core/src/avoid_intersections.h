@@ -1,0 +1,25 @@
+// Intersection avoidance (issue 11): on CAD parts (holes across sharp edges, long thin slots,
+// boundaries far from planar) the weight's best triangulation of a hole can cut through the mesh
+// around it, and refinement and smoothing cannot undo that. The planned triangles are checked
+// against the mesh and each other before they are added; those that intersect are forbidden
+// and the dynamic program solved again: a bounded number of rounds with the chosen weight, then
+// with the other weights (keeping what was forbidden). The first intersection-free triangulation
+// is kept: it is the weight's best among those without the forbidden triangles, so the patch
+// keeps good triangles where the weight allows. When none is found the plan stays as it was.
+#pragma once
+
+#include "face_grid.h"
+#include "holefill/fill.h"
+
+namespace holefill::detail {
+
+// Returns `plan`, or a triangulation of `hole` that intersects nothing in its place. Reads the
+// mesh only (the hole is not filled yet). `around` holds the mesh's faces by face index (or is
+// null: the mesh is then scanned). Fills `report` and sets `pairs` to the intersecting pairs of
+// the triangulation returned.
+PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
+                                         PlannedTriangulation plan,
+                                         const TriangulateOptions& options, const FaceGrid* around,
+                                         IntersectionAvoidance& report, std::size_t& pairs);
+
+}  // namespace holefill::detail

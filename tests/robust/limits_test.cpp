@@ -1,0 +1,105 @@
+// Bounded work and limits that say what they are (issue 17): a large --tau is capped against the
+// boundary's density instead of running for minutes, and a hole too large for the dynamic
+// program is refused with the limit that applies to it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cad_parts.h"
+#include "fill_guarantees.h"
+#include "holefill/fill.h"
+#include "holefill/holes.h"
+#include "test_meshes.h"
+
+namespace holefill::testing {
+namespace {
+
+// A unit cube without its top face: a hole of 4 edges.
+Mesh open_cube() {
+  const Mesh cube = surface_of({{0, 1}, {0, 1}, {0, 1}, [](int, int, int) { return true; }});
+  return without_faces(cube, [](const Point& c) { return c[2] > 0.99; });
+}
+
+TEST(Limits, ALargeTauStopsAtTheDensityCapAndSaysSo) {
+  // tau 100 asks for about (100 / sqrt 2)^2 = 5,000 times the boundary's density (thousands of
+  // vertices on this hole; tau 1000 ran for 300 s); the cap stops it at 32 times.
+  const Mesh before = open_cube();
+  const auto holes = find_holes(before);
+  ASSERT_EQ(holes.size(), 1u);
+  ASSERT_EQ(holes[0].size(), 4u);
+  Mesh mesh = before;
+  FillOptions options;
+  options.refine.tau = 100.0;
+  const auto fills = fill_holes(mesh, holes, options);
+  ASSERT_EQ(fills.size(), 1u);
+  const HoleFill& fill = fills[0];
+  EXPECT_TRUE(fill.refinement.stopped_at_vertex_cap);
+  // Area 1 over the mean boundary scale squared (edges of length 1 and sqrt 2), times 32.
+  EXPECT_GE(fill.refinement.vertex_cap, 16u);
+  EXPECT_LE(fill.refinement.vertex_cap, 32u);
+  EXPECT_LE(fill.stats.new_vertices, fill.refinement.vertex_cap);
+  EXPECT_NE(fill.refinement_note.find("cap of " + std::to_string(fill.refinement.vertex_cap)),
+            std::string::npos)
+      << fill.refinement_note;
+  EXPECT_EQ(check_fill_guarantees(before, holes, mesh, fills), "");
+
+  // The paper's tau stays far below the cap.
+  Mesh plain = before;
+  const auto plain_fills = fill_holes(plain, holes, {});
+  EXPECT_FALSE(plain_fills[0].refinement.stopped_at_vertex_cap);
+  EXPECT_TRUE(plain_fills[0].refinement_note.empty()) << plain_fills[0].refinement_note;
+}
+
+TEST(Limits, AHoleTooLargeForTheDynamicProgramNamesItsLimit) {
+  // 65,535 edges were refused with "at most 3000", the full search's limit, although the
+  // restricted search runs on holes of that size: the limit that applies is the apex index's.
+  const Mesh mesh = open_cube();
+  Hole huge;
+  huge.id = 0;
+  huge.vertices.assign(kMaxPolygonSize, VertexHandle(0));
+  huge.halfedges.assign(kMaxPolygonSize, HalfedgeHandle(0));
+  const auto plan = plan_triangulation(mesh, huge, {});
+  EXPECT_FALSE(plan.triangulation);
+  EXPECT_NE(plan.failure.find("at most " + std::to_string(kMaxPolygonSize - 1)), std::string::npos)
+      << plan.failure;
+  EXPECT_EQ(plan.failure.find("at most " + std::to_string(kMaxFullSearchEdges)), std::string::npos)
+      << plan.failure;
+
+  // Without the restricted search, the full search's limit is the one named.
+  Hole large = huge;
+  large.vertices.resize(kMaxFullSearchEdges + 1);
+  large.halfedges.resize(kMaxFullSearchEdges + 1);
+  TriangulateOptions full_only;
+  full_only.restricted.above_edges = 0;
+  const auto full = plan_triangulation(mesh, large, full_only);
+  EXPECT_NE(full.failure.find("at most " + std::to_string(kMaxFullSearchEdges)), std::string::npos)
+      << full.failure;
+}
+
+TEST(Limits, TheRestrictedSearchJoinsEachVertexToFewChords) {
+  // Every pair of anchors (every 24th vertex) was a chord: at 50,000 edges each anchor joined
+  // 2,083 others and the search took 333 s. Pockets of anchors keep every vertex's chords few.
+  constexpr int kEdges = 20000;
+  HolePolygon polygon;
+  for (int i = 0; i < kEdges; ++i) {
+    const double angle = 2.0 * M_PI * i / kEdges;
+    polygon.points.emplace_back(std::cos(angle), std::sin(angle), 0.1 * std::sin(5.0 * angle));
+    polygon.outside_normals.emplace_back(0.0, 0.0, 0.0);
+  }
+  const RestrictedSearch search;
+  const auto chords = restricted_chords(polygon, search);
+  std::vector<int> degree(kEdges, 0);
+  for (const auto& [i, k] : chords) {
+    ASSERT_LT(i, k);
+    ++degree[i];
+    ++degree[k];
+  }
+  const int most = *std::max_element(degree.begin(), degree.end());
+  // A vertex in two pockets at each of three levels and among its nearest neighbours' choices.
+  EXPECT_LE(most, 6 * search.pocket_edges + 4 * search.nearest_neighbours);
+  EXPECT_LE(chords.size(), static_cast<std::size_t>(kEdges) * 2 * search.pocket_edges);
+}
+
+}  // namespace
+}  // namespace holefill::testing
