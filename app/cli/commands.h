@@ -31,6 +31,7 @@ struct InfoArguments {
   std::string input;
   std::string format;  // of standard input, for an input of "-"
   bool json = false;
+  PreparationChoice preparation;  // stitching, small pieces, borders
 };
 
 int run_info(const InfoArguments& arguments, const Streams& streams);

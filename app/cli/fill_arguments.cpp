@@ -130,6 +130,7 @@ void add_fill_options(CLI::App& command, FillArguments& a) {
   add_triangulation_options(command, a);
   add_refinement_and_smoothing_options(command, a);
   add_selection_options(command, a);
+  add_preparation_options(command, a.preparation);
 }
 
 void finish_fill_options(FillArguments& a) {

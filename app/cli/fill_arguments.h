@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "holefill/fill.h"
+#include "preparation.h"
 
 namespace holefill::cli {
 
@@ -19,6 +20,7 @@ struct FillArguments {
   std::vector<std::int64_t> hole_ids;  // as typed; checked against the mesh's holes later
   HoleSelection selection;             // max_boundary_edges; hole_ids once checked
   FillOptions options;
+  PreparationChoice preparation;  // stitching, small pieces, borders
 
   // Texts and units of the command line, converted into `options` by finish().
   std::string weight, stage, smooth, fair_weights, remesh;

@@ -8,6 +8,7 @@
 #include "holefill/holes.h"
 #include "mesh_input.h"
 #include "outputs.h"
+#include "preparation.h"
 #include "progress_lines.h"
 #include "report.h"
 #include "table.h"
@@ -91,22 +92,29 @@ int run_fill(FillArguments& a, const Streams& streams) {
     return kWriteFailed;
   }
   Mesh mesh = load_and_warn(a.input, a.format, streams);
-  const auto holes = find_holes(mesh);
+  const PreparedMesh prepared = prepare_mesh(mesh, a.preparation, a.input, streams.err);
+  const auto& holes = prepared.holes;
   select_holes(a, holes.size());
   ReportInput report;
   report.input_path = a.input;
   report.output_path = a.output;
   report.options = &a.options;
+  report.prepared = &prepared;
   report.vertices_before = mesh.n_vertices();
   report.faces_before = mesh.n_faces();
   report.holes_before = holes.size();
 
+  // Holes listed with --holes are filled whatever they are; otherwise flat pieces and kept
+  // borders are left out (they still come along as the islands of a hole that is filled).
+  if (a.selection.hole_ids.empty()) a.selection.hole_ids = prepared.ids_to_fill;
   std::optional<ProgressLines> progress;
   if (streams.verbosity != Verbosity::Quiet) {
     progress.emplace(streams.err, a.input, streams.verbosity == Verbosity::Verbose);
   }
-  const auto fills =
-      fill_holes(mesh, holes, a.options, a.selection, progress ? &progress->progress() : nullptr);
+  const auto fills = a.selection.hole_ids.empty()
+                         ? std::vector<HoleFill>{}
+                         : fill_holes(mesh, holes, a.options, a.selection,
+                                      progress ? &progress->progress() : nullptr);
   report.vertices_after = mesh.n_vertices();
   report.faces_after = mesh.n_faces();
   report.holes_after = find_holes(mesh).size();

@@ -63,37 +63,78 @@ Json fill_json(const HoleFill& fill) {
   return entry;
 }
 
+// Stitching (null when off), the mesh's pieces, and every loop that is not a plain hole.
+void add_preparation(const PreparedMesh& p, Json& document) {
+  if (p.stitched) {
+    document["stitch"] = {{"tolerance", p.stitch.tolerance},
+                          {"edges_stitched", p.stitch.edges_stitched},
+                          {"seams", p.stitch.seams},
+                          {"vertices_merged", p.stitch.vertices_merged},
+                          {"largest_distance", p.stitch.largest_distance},
+                          {"edges_left_apart", p.stitch.edges_left_apart}};
+  } else {
+    document["stitch"] = nullptr;
+  }
+  document["pieces"] = {{"count", p.pieces.pieces.size()},
+                        {"lone_triangles", p.pieces.lone_triangles},
+                        {"small_pieces", p.pieces.small_pieces},
+                        {"largest_small_piece_faces", p.pieces.largest_small_piece},
+                        {"removed",
+                         {{"pieces", p.removed.pieces},
+                          {"faces", p.removed.faces},
+                          {"vertices", p.removed.vertices}}}};
+  Json special = Json::array();
+  for (std::size_t i = 0; i < p.holes.size(); ++i) {
+    const LoopClass& c = p.classes[i];
+    if (c.kind == LoopKind::Hole && p.holes[i].repeated_vertices == 0) continue;
+    Json entry{{"hole", p.holes[i].id},
+               {"kind", to_string(c.kind)},
+               {"pinched_vertices", p.holes[i].repeated_vertices},
+               {"spanned_share", c.spanned_share},
+               {"on_small_piece", c.on_small_piece}};
+    if (!c.reason.empty()) entry["reason"] = c.reason;
+    special.push_back(std::move(entry));
+  }
+  document["loops"] = {{"count", p.holes.size()},
+                       {"pinched", p.pinched_loops},
+                       {"borders_kept", p.borders_kept},
+                       {"not_plain_holes", std::move(special)}};
+}
+
 }  // namespace
 
 std::string json_report(const ReportInput& in) {
   Json holes = Json::array();
   for (const auto& fill : *in.fills) holes.push_back(fill_json(fill));
-  const Json document{
-      {"input", in.input_path},
-      {"output", in.output_path},
-      {"options", options_json(*in.options)},
+  Json document{
+      {"input", in.input_path}, {"output", in.output_path}, {"options", options_json(*in.options)}};
+  add_preparation(*in.prepared, document);
+  document.update(Json{
       {"before",
        {{"vertices", in.vertices_before}, {"faces", in.faces_before}, {"holes", in.holes_before}}},
       {"after",
        {{"vertices", in.vertices_after}, {"faces", in.faces_after}, {"holes", in.holes_after}}},
-      {"holes", std::move(holes)}};
+      {"holes", std::move(holes)}});
   return text_of(document);
 }
 
 std::string json_info(const std::string& input_path, const Mesh& mesh,
-                      const std::vector<Hole>& holes) {
+                      const PreparedMesh& prepared) {
   Json list = Json::array();
-  for (const auto& hole : holes) {
+  for (std::size_t i = 0; i < prepared.holes.size(); ++i) {
+    const Hole& hole = prepared.holes[i];
     list.push_back({{"id", hole.id},
                     {"boundary_edges", hole.size()},
                     {"perimeter", hole.perimeter},
-                    {"pinched", hole.pinched}});
+                    {"pinched", hole.pinched},
+                    {"kind", to_string(prepared.classes[i].kind)}});
   }
-  const Json document{{"input", input_path},
-                      {"vertices", mesh.n_vertices()},
-                      {"faces", mesh.n_faces()},
-                      {"components", connected_components(mesh)},
-                      {"holes", std::move(list)}};
+  Json document{{"input", input_path},
+                {"vertices", mesh.n_vertices()},
+                {"faces", mesh.n_faces()},
+                {"components", connected_components(mesh)}};
+  add_preparation(prepared, document);
+  document["holes"] = std::move(list);
   return text_of(document);
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "holefill/fill.h"
+#include "preparation.h"
 
 namespace holefill::cli {
 
@@ -14,6 +15,7 @@ struct ReportInput {
   std::string input_path;
   std::string output_path;
   const FillOptions* options = nullptr;
+  const PreparedMesh* prepared = nullptr;  // stitching, pieces, what each loop is
   std::size_t vertices_before = 0, faces_before = 0;
   std::size_t vertices_after = 0, faces_after = 0;
   std::size_t holes_before = 0, holes_after = 0;
@@ -23,8 +25,8 @@ struct ReportInput {
 // The report as a JSON document (ending in a newline).
 std::string json_report(const ReportInput& input);
 
-// What `holefill info --json` prints for `mesh` (read from `input_path`) and its holes.
+// What `holefill info --json` prints for `mesh` (read from `input_path`) and its loops.
 std::string json_info(const std::string& input_path, const Mesh& mesh,
-                      const std::vector<Hole>& holes);
+                      const PreparedMesh& prepared);
 
 }  // namespace holefill::cli

@@ -6,6 +6,7 @@
 
 #include "holefill/errors.h"
 #include "holefill/io.h"
+#include "holefill/stitch.h"
 
 namespace holefill::viewer {
 namespace {
@@ -23,9 +24,15 @@ bool Session::open(const std::filesystem::path& path) {
   try {
     LoadReport report;
     Mesh mesh = load_mesh(path, &report);
+    const StitchReport stitched = stitch_borders(mesh);
     load(std::move(mesh), path.filename().string());
     std::string text = "Opened " + path.string();
     for (const auto& warning : report.warnings) text += "\n" + warning;
+    if (stitched.edges_stitched > 0) {
+      text += "\nStitched " + std::to_string(stitched.edges_stitched) + " boundary edges in " +
+              std::to_string(stitched.seams) + " seams (" +
+              std::to_string(stitched.vertices_merged) + " vertices merged)";
+    }
     notice_ = {text, false};
     return true;
   } catch (const std::exception& error) {

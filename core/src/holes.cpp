@@ -17,6 +17,10 @@ Hole hole_through(const Mesh& mesh, HalfedgeHandle start) {
     h = mesh.next_halfedge_handle(h);
   } while (h != start && hole.halfedges.size() <= limit);
 
+  std::unordered_map<int, int> passes;
+  for (const auto v : hole.vertices) {
+    if (++passes[v.idx()] == 2) ++hole.repeated_vertices;
+  }
   Point sum(0.0, 0.0, 0.0);
   double surrounding_length = 0.0;
   std::size_t surrounding_count = 0;

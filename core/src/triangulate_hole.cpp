@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "holefill/triangulate.h"
+#include "vertex_link.h"
 
 namespace holefill {
 
@@ -67,6 +68,39 @@ std::optional<std::pair<int, int>> coincident_vertices(const Mesh& mesh, const H
   return std::nullopt;
 }
 
+// ---- Pinched loops: a loop passing more than once through one vertex X is triangulated as a
+// polygon whose passes are corners of their own (no chord joins two of them). OpenMesh links the
+// boundary around X into one rotation cycle, so each pass runs from the side of one fan of faces
+// around X to the side of another: the patch's triangles at each pass fill the gap between two
+// fans, and together they join every fan into one. (Splitting the loop at X would instead make
+// each part the back of one fan, and close it on itself.)
+
+// The first vertex the loop passes more than once that the patch `triangles` (positions of the
+// hole, oriented like it) would not leave with one fan of faces; -1 when there is none.
+int vertex_left_pinched(const Mesh& mesh, const Hole& hole,
+                        const std::vector<std::array<int, 3>>& triangles) {
+  std::unordered_map<int, int> passes;
+  for (const auto v : hole.vertices) ++passes[v.idx()];
+  std::unordered_map<int, std::vector<std::pair<int, int>>> links;
+  for (const auto& [v, count] : passes) {
+    if (count > 1)
+      add_link_edges(
+          mesh, VertexHandle(v), [](int u) { return u; }, links[v]);
+  }
+  for (const auto& t : triangles) {
+    for (int c = 0; c < 3; ++c) {
+      const auto link = links.find(hole.vertices[t[c]].idx());
+      if (link == links.end()) continue;
+      link->second.emplace_back(hole.vertices[t[(c + 1) % 3]].idx(),
+                                hole.vertices[t[(c + 2) % 3]].idx());
+    }
+  }
+  for (const auto& [v, link] : links) {
+    if (!is_one_fan(link)) return v;
+  }
+  return -1;
+}
+
 }  // namespace
 
 PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
@@ -95,13 +129,8 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
     return result;
   }
   std::unordered_map<int, int> seen;
-  for (const auto v : hole.vertices) {
-    if (++seen[v.idx()] > 1) {
-      result.failure = "its boundary passes twice through vertex " + std::to_string(v.idx() + 1) +
-                       " (a pinched hole); filling it would leave a non-manifold vertex";
-      return result;
-    }
-  }
+  const bool pinched = std::any_of(hole.vertices.begin(), hole.vertices.end(),
+                                   [&](VertexHandle v) { return ++seen[v.idx()] > 1; });
   if (const auto twins = coincident_vertices(mesh, hole)) {
     result.failure = "its boundary passes twice through one position (vertices " +
                      std::to_string(twins->first + 1) + " and " +
@@ -134,6 +163,12 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
     result.failure =
         "its triangulation would have a degenerate (zero-area) triangle: its boundary has "
         "collinear or coincident points";
+  } else if (const int v =
+                 pinched ? vertex_left_pinched(mesh, hole, result.triangulation->triangles) : -1;
+             v >= 0) {
+    result.triangulation.reset();
+    result.failure = "its boundary passes more than once through vertex " + std::to_string(v + 1) +
+                     ", and its patch would not join the fans of faces there into one";
   }
   return result;
 }

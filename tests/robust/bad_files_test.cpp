@@ -55,10 +55,13 @@ class BadFiles : public ScratchTest {
     }
   }
   // The CLI's fill exits with `code` and, for codes that write, writes the output.
-  CliRun expect_fill_exit(const fs::path& file, int code) const {
+  CliRun expect_fill_exit(const fs::path& file, int code,
+                          const std::vector<std::string>& options = {}) const {
     const std::string out = path("filled.obj");
     fs::remove(out);
-    const CliRun run = run_cli({"fill", file.string(), "-o", out});
+    std::vector<std::string> args{"fill", file.string(), "-o", out};
+    args.insert(args.end(), options.begin(), options.end());
+    const CliRun run = run_cli(args);
     EXPECT_EQ(run.code, code) << run.err;
     EXPECT_EQ(fs::exists(out), code == cli::kOk || code == cli::kSomeHolesNotFilled ||
                                    code == cli::kPatchesIntersect);
@@ -276,8 +279,12 @@ TEST_F(BadFiles, PolygonsAreTriangulatedWithoutFolding) {
       for (const auto v : mesh.fv_range(f)) p.push_back(mesh.point(v));
       area += 0.5 * OpenMesh::cross(p[1] - p[0], p[2] - p[0]).norm();
     }
-    EXPECT_NEAR(area, 1.0 + 4.0, 1e-12);             // nothing overlaps: the areas add up
-    expect_fill_exit(file, cli::kPatchesIntersect);  // filling a flat sheet covers its back
+    EXPECT_NEAR(area, 1.0 + 4.0, 1e-12);  // nothing overlaps: the areas add up
+    // A flat sheet's rim is not a hole: a patch would cover its back (exit 5 before issue #11).
+    const CliRun run = expect_fill_exit(file, cli::kOk);
+    EXPECT_NE(run.err.find("loop 0 is not a hole but the rim of a flat piece of 4 faces"),
+              std::string::npos)
+        << run.err;
   }
 }
 
@@ -315,9 +322,14 @@ TEST_F(BadFiles, DuplicateVerticesAreKeptAndCountedAndStlIsWelded) {
   EXPECT_EQ(mesh.n_vertices(), 6u);
   EXPECT_EQ(report.duplicate_positions, 2u);
   EXPECT_TRUE(has_warning(report, "2 vertices have exactly the position of another vertex"));
-  // Each triangle is alone: its boundary is its own back, which is never filled.
-  const CliRun run = expect_fill_exit(soup, cli::kSomeHolesNotFilled);
-  EXPECT_NE(run.err.find("the back of a lone triangle"), std::string::npos) << run.err;
+  // Unstitched, each triangle is alone: its boundary is not a hole but its own back.
+  const CliRun run = expect_fill_exit(soup, cli::kOk, {"--no-stitch"});
+  EXPECT_NE(run.err.find("loop 1 is not a hole but the rim of a lone triangle (face 2)"),
+            std::string::npos)
+      << run.err;
+  // Stitched, they are one flat square, whose rim is not a hole either.
+  EXPECT_NE(expect_fill_exit(soup, cli::kOk).err.find("the rim of a flat piece of 2 faces"),
+            std::string::npos);
 
   // STL stores corners by value: equal positions are one vertex.
   LoadReport stl_report;

@@ -17,6 +17,8 @@ struct Hole {
   double mean_surrounding_edge_length = 0.0;  // over all edges at the boundary vertices
   // A vertex occurs more than once on this loop or on several loops (two holes touch there).
   bool pinched = false;
+  // Vertices this loop itself passes through more than once (a pinched loop); 0 for a simple loop.
+  std::size_t repeated_vertices = 0;
 
   std::size_t size() const { return halfedges.size(); }  // boundary edge count
 };

@@ -1,0 +1,265 @@
+#include "holefill/stitch.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <nanoflann.hpp>
+#include <numeric>
+#include <unordered_map>
+#include <vector>
+
+#include "vertex_link.h"
+
+namespace holefill {
+namespace {
+
+// The boundary vertices' positions as nanoflann's dataset adaptor wants them.
+struct BoundaryPoints {
+  const Mesh& mesh;
+  std::vector<VertexHandle> vertices;
+
+  std::size_t kdtree_get_point_count() const { return vertices.size(); }
+  double kdtree_get_pt(std::size_t i, std::size_t axis) const {
+    return mesh.point(vertices[i])[static_cast<int>(axis)];
+  }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
+};
+
+using PointTree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, BoundaryPoints>,
+                                        BoundaryPoints, 3, std::size_t>;
+
+double default_tolerance(const Mesh& mesh) {
+  Point low(INFINITY, INFINITY, INFINITY), high(-INFINITY, -INFINITY, -INFINITY);
+  for (const auto v : mesh.vertices()) {
+    low.minimize(mesh.point(v));
+    high.maximize(mesh.point(v));
+  }
+  return mesh.n_vertices() ? kDefaultStitchRelativeTolerance * (high - low).norm() : 0.0;
+}
+
+// Boundary halfedges a->b and b'->a' with a' within the tolerance of a and b' of b, each listed
+// once (lower index first). A halfedge that lies on more than one other is matched with none:
+// three or more sheets meet there, and joining any two of them would be a guess.
+struct Matches {
+  std::vector<std::pair<HalfedgeHandle, HalfedgeHandle>> pairs;
+  std::size_t halfedges_on_another = 0;  // boundary halfedges lying on at least one other
+};
+
+Matches matching_boundary_edges(const Mesh& mesh, double tolerance) {
+  BoundaryPoints points{mesh, {}};
+  std::vector<int> slot(mesh.n_vertices(), -1);
+  std::vector<std::vector<HalfedgeHandle>> incoming;  // boundary halfedges into each slot
+  for (const auto h : mesh.halfedges()) {
+    if (!mesh.is_boundary(h)) continue;
+    const VertexHandle to = mesh.to_vertex_handle(h);
+    if (slot[to.idx()] < 0) {
+      slot[to.idx()] = static_cast<int>(points.vertices.size());
+      points.vertices.push_back(to);
+      incoming.emplace_back();
+    }
+    incoming[slot[to.idx()]].push_back(h);
+  }
+  Matches matches;
+  if (points.vertices.empty()) return matches;
+  PointTree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  // nanoflann keeps points strictly inside the (squared) radius: widen it, then filter exactly.
+  const double search_radius = std::nextafter(tolerance * tolerance, INFINITY);
+  auto within = [&](VertexHandle a, VertexHandle b) {
+    return (mesh.point(a) - mesh.point(b)).norm() <= tolerance;
+  };
+
+  std::vector<int> match_of(mesh.n_halfedges(), -1);
+  std::vector<std::pair<std::size_t, double>> found;
+  for (std::size_t s = 0; s < points.vertices.size(); ++s) {
+    const VertexHandle p = points.vertices[s];
+    const Point& at = mesh.point(p);
+    found.clear();
+    tree.radiusSearch(at.data(), search_radius, found, nanoflann::SearchParams(32, 0.0f, false));
+    for (const auto h : mesh.voh_range(p)) {
+      if (!mesh.is_boundary(h)) continue;
+      const VertexHandle q = mesh.to_vertex_handle(h);
+      int count = 0;
+      for (const auto& [near, squared] : found) {
+        if (!within(p, points.vertices[near])) continue;
+        for (const auto other : incoming[near]) {
+          if (other != h && within(mesh.from_vertex_handle(other), q)) {
+            match_of[h.idx()] = count++ ? -2 : other.idx();
+          }
+        }
+      }
+      if (count > 0) ++matches.halfedges_on_another;
+    }
+  }
+  for (const auto h : mesh.halfedges()) {
+    const int other = match_of[h.idx()];
+    if (other > h.idx() && match_of[other] == h.idx()) {
+      matches.pairs.emplace_back(h, HalfedgeHandle(other));
+    }
+  }
+  return matches;
+}
+
+// Groups of vertices to merge; each group's root is its lowest index, the vertex kept.
+class VertexGroups {
+ public:
+  explicit VertexGroups(std::size_t n) : parent_(n) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
+  int root(int v) {
+    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
+    return v;
+  }
+  void join(int a, int b) {
+    a = root(a);
+    b = root(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+// Whether merging `members` into `kept` (kept_of maps every vertex to the vertex it becomes)
+// leaves `kept` one fan of consistently oriented faces (vertex_link.h), with no face collapsed
+// and every member within the tolerance.
+bool merge_is_clean(const Mesh& mesh, VertexHandle kept, const std::vector<VertexHandle>& members,
+                    const std::vector<int>& kept_of, double tolerance) {
+  std::vector<std::pair<int, int>> link;
+  for (const auto v : members) {
+    if ((mesh.point(v) - mesh.point(kept)).norm() > tolerance) return false;
+    add_link_edges(
+        mesh, v, [&](int u) { return kept_of[u]; }, link);
+  }
+  for (const auto& [a, b] : link) {
+    if (a == kept.idx() || b == kept.idx()) return false;  // a face would lose a corner
+  }
+  return is_one_fan(link);
+}
+
+// Merges every vertex into kept_of[vertex]: the faces of merged vertices are deleted and added
+// again on the kept ones, highest index first, so that garbage collection puts each back at its
+// index. False, with the mesh as it was, when OpenMesh refuses a face.
+bool merge_vertices(Mesh& mesh, const std::vector<int>& kept_of) {
+  std::vector<FaceHandle> faces;
+  std::vector<VertexHandle> merged;
+  for (const auto v : mesh.vertices()) {
+    if (kept_of[v.idx()] == v.idx()) continue;
+    merged.push_back(v);
+    for (const auto f : mesh.vf_range(v)) faces.push_back(f);
+  }
+  std::sort(faces.begin(), faces.end(),
+            [](FaceHandle a, FaceHandle b) { return a.idx() > b.idx(); });
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+
+  const Mesh before = mesh;
+  for (const auto f : faces) mesh.delete_face(f, false);
+  for (const auto v : merged) mesh.delete_vertex(v, false);
+  const std::size_t edges_before = mesh.n_edges();
+  for (const auto old_face : faces) {
+    std::array<HalfedgeHandle, 3> old_halfedges;
+    std::array<VertexHandle, 3> corners;
+    HalfedgeHandle h = before.halfedge_handle(old_face);
+    for (int i = 0; i < 3; ++i, h = before.next_halfedge_handle(h)) {
+      old_halfedges[i] = h;
+      corners[i] = VertexHandle(kept_of[before.from_vertex_handle(h).idx()]);
+    }
+    const FaceHandle face = mesh.add_face(corners[0], corners[1], corners[2]);
+    if (!face.is_valid()) {
+      mesh = before;
+      return false;
+    }
+    mesh.copy_all_properties(old_face, face, true);
+    mesh.status(face).set_deleted(false);
+    // The face starts at the same corner as before, so it is written out the same way.
+    mesh.set_halfedge_handle(face, mesh.find_halfedge(corners[0], corners[1]));
+    for (int i = 0; i < 3; ++i) {
+      const HalfedgeHandle now = mesh.find_halfedge(corners[i], corners[(i + 1) % 3]);
+      mesh.copy_all_properties(old_halfedges[i], now, true);
+      mesh.status(now).set_deleted(false);
+      const EdgeHandle edge = mesh.edge_handle(now);
+      if (edge.idx() >= static_cast<int>(edges_before) &&
+          mesh.is_boundary(mesh.opposite_halfedge_handle(now))) {  // made by this face
+        mesh.copy_all_properties(before.edge_handle(old_halfedges[i]), edge, true);
+        mesh.status(edge).set_deleted(false);
+      }
+    }
+  }
+  mesh.garbage_collection();
+  return true;
+}
+
+}  // namespace
+
+StitchReport stitch_borders(Mesh& mesh, const StitchOptions& options) {
+  StitchReport report;
+  report.tolerance = options.tolerance >= 0.0 ? options.tolerance : default_tolerance(mesh);
+  const Matches matches = matching_boundary_edges(mesh, report.tolerance);
+  std::vector<std::pair<HalfedgeHandle, HalfedgeHandle>> pairs = matches.pairs;
+
+  // Join the ends of every pair; a group whose merge would not be clean gives up its pairs, and
+  // the groups are formed again, until every group is clean.
+  std::vector<int> kept_of;
+  for (bool changed = true; changed;) {
+    changed = false;
+    VertexGroups groups(mesh.n_vertices());
+    for (const auto& [a, b] : pairs) {
+      groups.join(mesh.from_vertex_handle(a).idx(), mesh.to_vertex_handle(b).idx());
+      groups.join(mesh.to_vertex_handle(a).idx(), mesh.from_vertex_handle(b).idx());
+    }
+    kept_of.assign(mesh.n_vertices(), 0);
+    std::unordered_map<int, std::vector<VertexHandle>> members;
+    for (const auto v : mesh.vertices()) {
+      kept_of[v.idx()] = groups.root(v.idx());
+      if (kept_of[v.idx()] != v.idx()) members[kept_of[v.idx()]].push_back(v);
+    }
+    std::vector<char> refused(mesh.n_vertices(), 0);
+    for (const auto& [kept, group] : members) {
+      std::vector<VertexHandle> all = group;
+      all.push_back(VertexHandle(kept));
+      if (!merge_is_clean(mesh, VertexHandle(kept), all, kept_of, report.tolerance)) {
+        refused[kept] = 1;
+      }
+    }
+    const auto before = pairs.size();
+    std::erase_if(pairs, [&](const auto& pair) {
+      return refused[kept_of[mesh.from_vertex_handle(pair.first).idx()]] ||
+             refused[kept_of[mesh.to_vertex_handle(pair.first).idx()]];
+    });
+    changed = pairs.size() != before;
+  }
+  report.edges_left_apart = matches.halfedges_on_another - 2 * pairs.size();
+  if (pairs.empty()) return report;
+
+  VertexGroups seams(mesh.n_vertices());
+  for (const auto& [a, b] : pairs) {
+    seams.join(kept_of[mesh.from_vertex_handle(a).idx()], kept_of[mesh.to_vertex_handle(a).idx()]);
+  }
+  std::vector<char> seam_seen(mesh.n_vertices(), 0);
+  for (const auto& [a, b] : pairs) {
+    const int seam = seams.root(kept_of[mesh.from_vertex_handle(a).idx()]);
+    if (!seam_seen[seam]) ++report.seams, seam_seen[seam] = 1;
+  }
+  for (const auto v : mesh.vertices()) {
+    if (kept_of[v.idx()] == v.idx()) continue;
+    ++report.vertices_merged;
+    report.largest_distance =
+        std::max(report.largest_distance,
+                 (mesh.point(v) - mesh.point(VertexHandle(kept_of[v.idx()]))).norm());
+  }
+  if (!merge_vertices(mesh, kept_of)) {
+    report.edges_left_apart = matches.halfedges_on_another;
+    report.vertices_merged = 0;
+    report.largest_distance = 0.0;
+    report.seams = 0;
+    return report;
+  }
+  report.edges_stitched = pairs.size();
+  return report;
+}
+
+}  // namespace holefill

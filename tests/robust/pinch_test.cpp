@@ -1,0 +1,96 @@
+// Pinched loops (issue #11): a loop passing twice through one vertex is filled so that the vertex
+// ends up with one fan of faces, whichever way the loop pairs the fans' sides there.
+#include <fstream>
+
+#include "dirty_meshes.h"
+#include "fill_guarantees.h"
+#include "holefill/fill.h"
+#include "holefill/holes.h"
+#include "test_meshes.h"
+
+namespace holefill::testing {
+namespace {
+
+struct Pinched {
+  Mesh before, after;
+  std::vector<Hole> holes;
+  std::vector<HoleFill> fills;
+};
+
+Pinched fill_all(const Mesh& mesh) {
+  Pinched p{mesh, mesh, find_holes(mesh), {}};
+  p.fills = fill_holes(p.after, p.holes, FillOptions{});
+  return p;
+}
+
+// Two bent fans of three triangles around the origin, touching only there: one loop runs
+// around both, through the origin twice, each time from one fan's side to the other's.
+Mesh bowtie_of_fans() {
+  Mesh mesh;
+  const auto centre = mesh.add_vertex(Point(0, 0, 0));
+  for (const double start : {0.0, M_PI}) {
+    std::vector<VertexHandle> rim;
+    for (int i = 0; i < 4; ++i) {
+      const double a = start + 0.25 * M_PI * i;
+      rim.push_back(mesh.add_vertex(Point(std::cos(a), std::sin(a), 0.3 * std::sin(2 * a + 1))));
+    }
+    for (int i = 0; i < 3; ++i) mesh.add_face(centre, rim[i], rim[i + 1]);
+  }
+  return mesh;
+}
+
+TEST(PinchedLoops, ALoopThroughABowtieIsFilledAsTwoCornersAndTheVertexBecomesManifold) {
+  const Mesh mesh = bowtie_of_fans();
+  const auto holes = find_holes(mesh);
+  ASSERT_EQ(holes.size(), 1u);
+  ASSERT_EQ(holes[0].repeated_vertices, 1u);
+  ASSERT_FALSE(mesh.is_manifold(VertexHandle(0)));
+  const Pinched p = fill_all(mesh);
+  ASSERT_EQ(p.fills.size(), 1u);
+  EXPECT_FALSE(p.fills[0].failed()) << p.fills[0].failure;
+  EXPECT_EQ(check_fill_guarantees(p.before, p.holes, p.after, p.fills), "");
+  EXPECT_TRUE(p.after.is_manifold(VertexHandle(0)));
+  EXPECT_FALSE(p.after.is_boundary(VertexHandle(0)));  // its two gaps are both closed
+  EXPECT_TRUE(find_holes(p.after).empty());
+}
+
+// A terrain with a square ring of cells removed around a square island of cells, the island
+// tied to the rest by two cells on a diagonal that touch it and each other at corners only: one
+// loop runs around the ring and passes twice through each of those corners.
+Soup ring_with_pinches() {
+  const int n = 21;
+  const Soup grid =
+      soup_of(make_grid(n, [](double u, double v) { return 0.1 * std::sin(3 * u + v); }));
+  const double h = 1.0 / (n - 1);
+  return without(grid, [h](const Point& c) {
+    const int i = static_cast<int>(c[0] / h), j = static_cast<int>(c[1] / h);
+    const bool ring =
+        i >= 6 && i <= 13 && j >= 6 && j <= 13 && !(i >= 8 && i <= 11 && j >= 8 && j <= 11);
+    const bool tie = (i == 7 && j == 7) || (i == 6 && j == 6);
+    return ring && !tie;
+  });
+}
+
+class PinchedFile : public ScratchTest {};
+
+TEST_F(PinchedFile, ARingHoleTouchingItselfAtTwoCornersIsClosedAndTheCornersBecomeManifold) {
+  const std::string input = write("ring.obj", obj_text(ring_with_pinches())).string();
+  const Mesh mesh = load_mesh(input);
+  const auto holes = find_holes(mesh);
+  std::size_t repeated = 0;
+  for (const auto& hole : holes) repeated += hole.repeated_vertices;
+  ASSERT_EQ(repeated, 2u);
+  const CliRun run = run_cli(
+      {"fill", input, "-o", path("out.obj"), "--keep-borders", "--report", path("report.json")});
+  EXPECT_EQ(run.code, cli::kOk) << run.err;
+  const Mesh after = load_mesh(path("out.obj"));
+  EXPECT_TRUE(is_oriented_manifold(after));
+  EXPECT_TRUE(original_part_unchanged(mesh, after));
+  EXPECT_EQ(find_holes(after).size(), 1u);  // the terrain's border, kept
+  std::ifstream json(path("report.json"));
+  const std::string report((std::istreambuf_iterator<char>(json)), {});
+  EXPECT_NE(report.find("\"pinched_vertices\": "), std::string::npos) << report;
+}
+
+}  // namespace
+}  // namespace holefill::testing
