@@ -47,6 +47,7 @@ void set_defaults(FillArguments& a) {
   a.smooth = name_of(kSmoothMethods, a.options.smooth.method);
   a.fair_weights = a.options.smooth.fair.cotangent_weights ? "cotangent" : "uniform";
   a.remesh = a.options.refine.remesh ? "on" : "off";
+  a.islands = a.options.islands.detect ? "on" : "off";
   a.fold_limit_degrees = a.options.triangulate.fold_limit * kDegreesPerRadian;
 }
 
@@ -104,6 +105,18 @@ void add_selection_options(CLI::App& command, FillArguments& a) {
       .add_option("--max-boundary", a.selection.max_boundary_edges,
                   "fill only holes with at most this many boundary edges\n(0: no limit)")
       ->transform(whole_number(0, kNoLimit));
+  command
+      .add_option("--islands", a.islands,
+                  "on: fill each hole with the islands floating in it (one\n"
+                  "patch); off: fill every loop on its own")
+      ->check(CLI::IsMember({"on", "off"}));
+  command
+      .add_option("--bridge", a.bridges,
+                  "join holes A and B with one band instead of two caps,\n"
+                  "e.g. --bridge 0,3 (may be repeated)")
+      ->type_name("A,B")
+      ->allow_extra_args(false)
+      ->default_str("");
   command.add_option("--stage", a.stage, "stop after this stage")
       ->check(CLI::IsMember(names(kStages)));
 }
@@ -137,6 +150,7 @@ void finish_fill_options(FillArguments& a) {
   parse_weight(a.weight, a.options.triangulate.weight);
   a.options.triangulate.fold_limit = a.fold_limit_degrees / kDegreesPerRadian;
   a.options.refine.remesh = a.remesh == "on";
+  a.options.islands.detect = a.islands == "on";
   a.options.smooth.method = value_of(kSmoothMethods, a.smooth);
   a.options.smooth.fair.cotangent_weights = a.fair_weights == "cotangent";
   a.options.last_stage = value_of(kStages, a.stage);

@@ -18,12 +18,13 @@ struct FillArguments {
   std::string report_path;
   std::string format;                  // of "-" (standard input or output): obj, off, ply or stl
   std::vector<std::int64_t> hole_ids;  // as typed; checked against the mesh's holes later
+  std::vector<std::string> bridges;    // "A,B" as typed; checked against the mesh's holes later
   HoleSelection selection;             // max_boundary_edges; hole_ids once checked
   FillOptions options;
   PreparationChoice preparation;  // stitching, small pieces, borders
 
   // Texts and units of the command line, converted into `options` by finish().
-  std::string weight, stage, smooth, fair_weights, remesh;
+  std::string weight, stage, smooth, fair_weights, remesh, islands;
   double fold_limit_degrees = 0.0;
 };
 

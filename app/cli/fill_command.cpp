@@ -1,7 +1,12 @@
 // `holefill fill MESH -o OUT`: check the outputs, fill the selected holes, write the mesh and the
 // report, then print the table (after the files, so a closed stdout cannot cost them).
+#include <algorithm>
+#include <cctype>
 #include <optional>
 #include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "commands.h"
 #include "holefill/errors.h"
@@ -16,6 +21,27 @@
 namespace holefill::cli {
 namespace {
 
+// "A,B": two hole ids of the mesh.
+std::pair<int, int> parse_bridge(const FillArguments& a, const std::string& text,
+                                 std::size_t hole_count) {
+  const std::size_t comma = text.find(',');
+  std::vector<int> ids;
+  for (const std::string& part :
+       {text.substr(0, comma), comma == std::string::npos ? "" : text.substr(comma + 1)}) {
+    if (part.empty() || part.size() > 9 ||
+        !std::all_of(part.begin(), part.end(), [](unsigned char c) { return std::isdigit(c); })) {
+      throw UsageError("--bridge takes two hole ids, A,B (e.g. --bridge 0,3), got '" + text + "'");
+    }
+    const int id = std::stoi(part);
+    if (id >= static_cast<int>(hole_count)) {
+      throw UsageError("--bridge: " + a.input + " has no hole " + part + " (it has " +
+                       std::to_string(hole_count) + ")");
+    }
+    ids.push_back(id);
+  }
+  return {ids[0], ids[1]};
+}
+
 void select_holes(FillArguments& a, std::size_t hole_count) {
   for (const std::int64_t id : a.hole_ids) {
     if (id >= static_cast<std::int64_t>(hole_count)) {
@@ -23,6 +49,9 @@ void select_holes(FillArguments& a, std::size_t hole_count) {
                        std::to_string(hole_count) + ")");
     }
     a.selection.hole_ids.push_back(static_cast<int>(id));
+  }
+  for (const std::string& text : a.bridges) {
+    a.selection.bridges.push_back(parse_bridge(a, text, hole_count));
   }
 }
 

@@ -1,15 +1,37 @@
-// `holefill info MESH`: counts and a table of the holes (or the same as JSON).
+// `holefill info MESH`: counts and a table of the holes with their islands (or the same as JSON).
 #include <iomanip>
 #include <ostream>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "commands.h"
 #include "holefill/holes.h"
+#include "holefill/islands.h"
 #include "holefill/stats.h"
 #include "mesh_input.h"
 #include "report.h"
 #include "table.h"
 
 namespace holefill::cli {
+namespace {
+
+// "islands 1,2", "island of 0", and "see below" when the hole has a problem (pinches are in the
+// loop's own note).
+std::string island_note(const Hole& hole, const IslandMap& islands) {
+  std::string note;
+  auto add = [&note](const std::string& part) { note += (note.empty() ? "" : ", ") + part; };
+  if (islands.has_islands(hole.id)) add("islands " + id_list(islands.islands[hole.id]));
+  if (islands.outer[hole.id] >= 0) add("island of " + std::to_string(islands.outer[hole.id]));
+  if (!islands.problem[hole.id].empty()) add("see below");
+  return note;
+}
+
+std::string joined_note(const std::string& first, const std::string& second) {
+  return first.empty() || second.empty() ? first + second : first + ", " + second;
+}
+
+}  // namespace
 
 int run_info(const InfoArguments& a, const Streams& streams) {
   Mesh mesh = load_and_warn(a.input, a.format, streams);
@@ -24,12 +46,17 @@ int run_info(const InfoArguments& a, const Streams& streams) {
       << connected_components(mesh) << " components, " << holes.size() << " holes\n";
   if (holes.empty()) return kOk;
   // A space between columns whatever the widths: huge values widen a row, never merge cells.
+  const IslandMap islands = find_islands(mesh, holes);
   out << "  hole  boundary_edges   perimeter  note\n";
   for (std::size_t i = 0; i < holes.size(); ++i) {
     const Hole& hole = holes[i];
     out << std::setw(6) << hole.id << ' ' << std::setw(15) << hole.size() << ' ' << std::setw(11)
-        << format("%.6g", hole.perimeter) << "  " << loop_note(hole, prepared.classes[i]) << "\n";
+        << format("%.6g", hole.perimeter) << "  "
+        << joined_note(loop_note(hole, prepared.classes[i]), island_note(hole, islands)) << "\n";
   }
+  std::set<std::string> problems(islands.problem.begin(), islands.problem.end());
+  problems.erase("");
+  for (const auto& problem : problems) out << "  not fillable as is: " << problem << "\n";
   return kOk;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "holefill/islands.h"
 #include "holefill/stats.h"
 
 namespace holefill::cli {
@@ -20,6 +21,7 @@ Json options_json(const FillOptions& o) {
           {"restricted_above", o.triangulate.restricted.above_edges},
           {"tau", o.refine.tau},
           {"remesh", o.refine.remesh},
+          {"islands", o.islands.detect ? "on" : "off"},
           {"smooth", o.smooth.method == SmoothMethod::Fair ? "fair" : "umbrella"},
           {"fair_order", o.smooth.fair.order},
           {"smooth_iterations", o.smooth.iterations},
@@ -30,6 +32,7 @@ Json options_json(const FillOptions& o) {
 Json fill_json(const HoleFill& fill) {
   const PatchStats& s = fill.stats;
   Json entry{{"hole", fill.hole_id},
+             {"joined_holes", fill.joined_holes},
              {"boundary_edges", fill.boundary_edges},
              {"filled", !fill.failed()},
              {"stage", to_string(fill.stage())}};
@@ -120,14 +123,19 @@ std::string json_report(const ReportInput& in) {
 
 std::string json_info(const std::string& input_path, const Mesh& mesh,
                       const PreparedMesh& prepared) {
+  const IslandMap islands = find_islands(mesh, prepared.holes);
   Json list = Json::array();
   for (std::size_t i = 0; i < prepared.holes.size(); ++i) {
     const Hole& hole = prepared.holes[i];
-    list.push_back({{"id", hole.id},
-                    {"boundary_edges", hole.size()},
-                    {"perimeter", hole.perimeter},
-                    {"pinched", hole.pinched},
-                    {"kind", to_string(prepared.classes[i].kind)}});
+    Json entry{{"id", hole.id},
+               {"boundary_edges", hole.size()},
+               {"perimeter", hole.perimeter},
+               {"pinched", hole.pinched},
+               {"kind", to_string(prepared.classes[i].kind)},
+               {"islands", islands.islands[hole.id]}};
+    if (islands.outer[hole.id] >= 0) entry["island_of"] = islands.outer[hole.id];
+    if (!islands.problem[hole.id].empty()) entry["problem"] = islands.problem[hole.id];
+    list.push_back(std::move(entry));
   }
   Json document{{"input", input_path},
                 {"vertices", mesh.n_vertices()},

@@ -12,6 +12,15 @@ std::string format(const char* pattern, double value) {
   return buffer;
 }
 
+std::string id_list(const std::vector<int>& ids) {
+  std::string text;
+  for (const int id : ids) {
+    if (!text.empty()) text += ',';
+    text += std::to_string(id);
+  }
+  return text;
+}
+
 void print_fill_table(const std::vector<HoleFill>& fills, std::ostream& out) {
   out << "  hole  boundary  stage          new_v   new_f  min_angle  max_dihedral  intersect"
          "   seconds\n";
@@ -25,7 +34,9 @@ void print_fill_table(const std::vector<HoleFill>& fills, std::ostream& out) {
         << std::right << ' ' << std::setw(6) << s.new_vertices << ' ' << std::setw(7) << s.new_faces
         << ' ' << std::setw(10) << format("%.2f", s.min_angle_deg) << ' ' << std::setw(13)
         << format("%.2f", s.max_dihedral_deg) << ' ' << std::setw(10) << fill.self_intersections
-        << ' ' << std::setw(9) << format("%.4f", seconds) << "\n";
+        << ' ' << std::setw(9) << format("%.4f", seconds);
+    if (!fill.joined_holes.empty()) out << "  with holes " << id_list(fill.joined_holes);
+    out << "\n";
   }
 }
 
