@@ -11,31 +11,62 @@
 #include <vector>
 
 #include "background.h"
+#include "hole_table.h"
 #include "palette.h"
+#include "valence_bins.h"
 
 namespace holefill::viewer {
 namespace {
 
 constexpr float kSqrt2 = 1.41421356f;
 const ImVec4 kErrorColor{1.0f, 0.45f, 0.4f, 1.0f};
+constexpr double kNoticeSeconds = 12.0;
 
-void histogram(const char* id, const std::map<int, std::size_t>& valences, float height) {
-  if (valences.empty()) {
+// A bar per valence bin (valence_bins: the same bins for every chart) with its label under it
+// and the count on hover; `log`: heights on a log scale.
+void histogram(const char* id, const std::map<int, std::size_t>& valences, float height, bool log) {
+  const auto bins = valence_bins(valences);
+  std::size_t most = 0, total = 0;
+  for (const auto& bin : bins) {
+    most = std::max(most, bin.count);
+    total += bin.count;
+  }
+  if (total == 0) {
     ImGui::TextDisabled("(no vertices)");
     return;
   }
-  const int first = std::min(3, valences.begin()->first);
-  const int last = std::max(9, valences.rbegin()->first);
-  std::vector<float> counts(static_cast<std::size_t>(last - first + 1), 0.0f);
-  float most = 0.0f;
-  for (const auto& [valence, count] : valences) {
-    counts[static_cast<std::size_t>(valence - first)] = static_cast<float>(count);
-    most = std::max(most, static_cast<float>(count));
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x;
+  ImGui::InvisibleButton(id, ImVec2(width, height + ImGui::GetTextLineHeight()));
+  const bool hovered = ImGui::IsItemHovered();
+  const float base = origin.y + height;
+  const float slot = width / static_cast<float>(bins.size());
+  draw->AddRectFilled(origin, ImVec2(origin.x + width, base), ImGui::GetColorU32(ImGuiCol_FrameBg));
+  for (std::size_t i = 0; i < bins.size(); ++i) {
+    const float left = origin.x + slot * static_cast<float>(i);
+    const bool over =
+        hovered && ImGui::GetIO().MousePos.x >= left && ImGui::GetIO().MousePos.x < left + slot;
+    const float bar = static_cast<float>(bar_height(bins[i].count, most, log)) * (height - 4.0f);
+    if (bins[i].count > 0) {
+      draw->AddRectFilled(
+          ImVec2(left + 2.0f, base - std::max(bar, 1.0f)), ImVec2(left + slot - 2.0f, base),
+          ImGui::GetColorU32(over ? ImGuiCol_PlotHistogramHovered : ImGuiCol_PlotHistogram));
+    }
+    const float label_width = ImGui::CalcTextSize(bins[i].label).x;
+    draw->AddText(ImVec2(left + 0.5f * (slot - label_width), base),
+                  ImGui::GetColorU32(ImGuiCol_TextDisabled), bins[i].label);
+    if (over) {
+      ImGui::SetTooltip("valence %s: %zu vertices (%.1f %%)", bins[i].label, bins[i].count,
+                        100.0 * static_cast<double>(bins[i].count) / static_cast<double>(total));
+    }
   }
-  char label[64];
-  std::snprintf(label, sizeof label, "valence %d .. %d", first, last);
-  ImGui::PlotHistogram(id, counts.data(), static_cast<int>(counts.size()), 0, label, 0.0f,
-                       most * 1.1f, ImVec2(ImGui::GetContentRegionAvail().x, height));
+  draw->AddLine(ImVec2(origin.x, base), ImVec2(origin.x + width, base),
+                ImGui::GetColorU32(ImGuiCol_Text));
+  char tallest[48];
+  std::snprintf(tallest, sizeof tallest, "%zu%s", most, log ? " (log)" : "");
+  draw->AddText(ImVec2(origin.x + 3.0f, origin.y + 1.0f), ImGui::GetColorU32(ImGuiCol_TextDisabled),
+                tallest);
 }
 
 void patch_statistics(const HoleFill& fill) {
@@ -51,7 +82,7 @@ void patch_statistics(const HoleFill& fill) {
   ImGui::Text("Stage: %s", to_string(fill.stage()));
   ImGui::Text("New vertices %zu   new faces %zu", s.new_vertices, s.new_faces);
   ImGui::Text("Min angle %.2f deg (mean %.2f)", s.min_angle_deg, s.mean_min_angle_deg);
-  ImGui::Text("Max dihedral %.2f deg   area %.4g", s.max_dihedral_deg, s.area);
+  ImGui::Text("Max dihedral %.2f deg   area %.4g units^2", s.max_dihedral_deg, s.area);
   ImGui::Text("Times: tri %.1f  ref %.1f  smo %.1f ms", 1e3 * fill.times.triangulate_seconds,
               1e3 * fill.times.refine_seconds, 1e3 * fill.times.smooth_seconds);
   if (!fill.smoothing_note.empty()) ImGui::TextWrapped("%s", fill.smoothing_note.c_str());
@@ -77,46 +108,98 @@ void file_section(Session& session, FileActions& files, UiState& ui) {
   ImGui::SameLine();
   if (ImGui::Button("Keys (F1)")) ui.show_help = true;
   const Notice& notice = session.notice();
+  // A message that is not an error goes after a while; an error stays until dismissed.
+  if (notice.text != ui.shown_notice) {
+    ui.shown_notice = notice.text;
+    ui.notice_since = ImGui::GetTime();
+  } else if (!notice.error && ImGui::GetTime() - ui.notice_since > kNoticeSeconds) {
+    session.clear_notice();
+  }
   if (!notice.text.empty()) {
+    if (ImGui::SmallButton("x")) session.clear_notice();
+    tooltip("Dismiss the message");
+    ImGui::SameLine();
     if (notice.error) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
     ImGui::TextWrapped("%s", notice.text.c_str());
     if (notice.error) ImGui::PopStyleColor();
-    if (ImGui::SmallButton("Dismiss")) session.clear_notice();
   }
+}
+
+void hole_filters(HoleView& view) {
+  ImGui::TextDisabled("show");
+  ImGui::SameLine();
+  ImGui::Checkbox("open", &view.only_open);
+  ImGui::SameLine();
+  ImGui::Checkbox("filled", &view.only_filled);
+  ImGui::SameLine();
+  ImGui::Checkbox("failed", &view.only_failed);
+  ImGui::SameLine();
+  ImGui::Checkbox("intersecting", &view.only_intersecting);
+  tooltip("Show only the holes with any of the ticked states (none ticked: all)");
+}
+
+// Reads the table's sort order (a click on a header) into the view.
+void take_sort_order(HoleView& view) {
+  ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs();
+  if (!specs || !specs->SpecsDirty || specs->SpecsCount == 0) return;
+  view.column = static_cast<HoleColumn>(specs->Specs[0].ColumnUserID);
+  view.descending = specs->Specs[0].SortDirection == ImGuiSortDirection_Descending;
+  specs->SpecsDirty = false;
+}
+
+void hole_row(Session& session, const HoleRow& row, bool scroll_here) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  char label[32];
+  std::snprintf(label, sizeof label, "%d", row.id);
+  if (ImGui::Selectable(label, session.selected() == row.id, ImGuiSelectableFlags_SpanAllColumns)) {
+    session.select(row.id);
+  }
+  if (scroll_here) ImGui::SetScrollHereY();
+  if (ImGui::IsItemHovered() && !row.failure.empty())
+    ImGui::SetTooltip("Hole %d failed: %s", row.id, row.failure.c_str());
+  ImGui::TableNextColumn();
+  ImGui::Text("%zu", row.edges);
+  ImGui::TableNextColumn();
+  ImGui::Text("%.4g", row.perimeter);
+  ImGui::TableNextColumn();
+  ImGui::Text("%.4g", row.area);
+  ImGui::TableNextColumn();
+  if (row.status == HoleStatus::Failed) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+  ImGui::Text("%s%s", row.stage, row.intersecting ? " (x)" : "");
+  if (row.status == HoleStatus::Failed) ImGui::PopStyleColor();
 }
 
 void hole_list(Session& session, UiState& ui) {
   ImGui::Text("%s: %zu holes", session.name().c_str(), session.holes().size());
-  const float rows = static_cast<float>(std::min<std::size_t>(session.holes().size(), 6) + 1);
-  if (ImGui::BeginTable(
-          "holes", 4,
-          ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersOuter,
-          ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 6.0f))) {
+  hole_filters(ui.holes);
+  const auto rows = arrange(hole_rows(session), ui.holes);
+  // The list follows a hole picked in the 3D view.
+  const bool follow = session.selected() != ui.listed_selection;
+  ui.listed_selection = session.selected();
+  const float height = 6.0f * ImGui::GetTextLineHeightWithSpacing() + 6.0f;
+  if (ImGui::BeginTable("holes", 5,
+                        ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
+                            ImGuiTableFlags_BordersOuter | ImGuiTableFlags_Sortable,
+                        ImVec2(0.0f, height))) {
     ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("hole");
-    ImGui::TableSetupColumn("edges");
-    ImGui::TableSetupColumn("perimeter");
-    ImGui::TableSetupColumn("stage");
+    ImGui::TableSetupColumn("hole",
+                            ImGuiTableColumnFlags_DefaultSort | ImGuiTableColumnFlags_WidthFixed,
+                            40.0f, static_cast<ImGuiID>(HoleColumn::Id));
+    ImGui::TableSetupColumn(
+        "edges", ImGuiTableColumnFlags_PreferSortDescending | ImGuiTableColumnFlags_WidthFixed,
+        48.0f, static_cast<ImGuiID>(HoleColumn::Edges));
+    ImGui::TableSetupColumn("perimeter", ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
+                            static_cast<ImGuiID>(HoleColumn::Perimeter));
+    ImGui::TableSetupColumn("area", ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
+                            static_cast<ImGuiID>(HoleColumn::Area));
+    ImGui::TableSetupColumn("stage", 0, 0.0f, static_cast<ImGuiID>(HoleColumn::Status));
     ImGui::TableHeadersRow();
-    for (const auto& hole : session.holes()) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      char label[32];
-      std::snprintf(label, sizeof label, "%d", hole.id);
-      if (ImGui::Selectable(label, session.selected() == hole.id,
-                            ImGuiSelectableFlags_SpanAllColumns)) {
-        session.select(hole.id);
-      }
-      ImGui::TableNextColumn();
-      ImGui::Text("%zu", hole.size());
-      ImGui::TableNextColumn();
-      ImGui::Text("%.4g", hole.perimeter);
-      ImGui::TableNextColumn();
-      const HoleFill& fill = session.fill(hole.id);
-      ImGui::TextUnformatted(fill.failed() ? "failed" : to_string(fill.stage()));
-    }
+    take_sort_order(ui.holes);
+    for (const auto& row : rows) hole_row(session, row, follow && row.id == session.selected());
     ImGui::EndTable();
   }
+  if (rows.empty()) ImGui::TextDisabled("No hole matches the filters.");
   ImGui::BeginDisabled(session.selected() < 0);
   if (ImGui::Button("Frame this hole")) ui.frame_selected = true;
   ImGui::EndDisabled();
@@ -270,23 +353,26 @@ void step_section(Session& session, Worker& worker, UiState& ui) {
   ImGui::EndDisabled();
 }
 
-void statistics_section(Session& session) {
+void statistics_section(Session& session, UiState& ui) {
   if (session.selected() >= 0) {
     const HoleFill& fill = session.fill(session.selected());
     ImGui::Text("Hole %d patch", session.selected());
     patch_statistics(fill);
     ImGui::TextUnformatted("Valences of the patch's new vertices");
-    histogram("##patch_valences", fill.stats.valence_histogram, 60.0f);
+    histogram("##patch_valences", fill.stats.valence_histogram, 40.0f, ui.log_valences);
   } else {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     ImGui::TextWrapped("Select a hole: click on or inside its outline, or in the list.");
     ImGui::PopStyleColor();
   }
   ImGui::Text("Valences of the whole mesh (%zu vertices)", session.mesh().n_vertices());
-  histogram("##mesh_valences", session.mesh_valences(), 60.0f);
+  ImGui::SameLine();
+  ImGui::Checkbox("log", &ui.log_valences);
+  tooltip("Bar heights on a log scale, so that rare valences of a big mesh stay visible");
+  histogram("##mesh_valences", session.mesh_valences(), 40.0f, ui.log_valences);
 }
 
-void comparison_section(Session& session) {
+void comparison_section(Session& session, const UiState& ui) {
   bool compare = session.compare();
   if (ImGui::Checkbox("Compare", &compare)) session.set_compare(compare);
   ImGui::SameLine();
@@ -322,7 +408,7 @@ void comparison_section(Session& session) {
         ImGui::Text("max dihedral %.2f", s.max_dihedral_deg);
         ImGui::Text("area %.4g", s.area);
       }
-      histogram("##valences", s.valence_histogram, 45.0f);
+      histogram("##valences", s.valence_histogram, 45.0f, ui.log_valences);
       ImGui::PopID();
     }
     ImGui::EndTable();
@@ -374,9 +460,9 @@ void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& 
   step_section(session, worker, ui);
   ImGui::EndDisabled();
   ImGui::Separator();
-  statistics_section(session);
+  statistics_section(session, ui);
   ImGui::Separator();
-  comparison_section(session);
+  comparison_section(session, ui);
   ImGui::Separator();
   display_section(ui);
   ImGui::End();

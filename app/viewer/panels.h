@@ -10,6 +10,7 @@
 
 #include "display.h"
 #include "file_actions.h"
+#include "hole_table.h"
 #include "session.h"
 #include "worker.h"
 
@@ -27,6 +28,11 @@ struct UiState {
   // The options while a slider is dragged (applied where it is let go).
   std::optional<FillOptions> dragged_options;
   int fill_all_max_edges = 0;  // "Fill holes up to N edges"; 0: all
+  HoleView holes;              // the hole list's order and filters
+  int listed_selection = -1;   // the selection the list last showed (it scrolls to a new one)
+  bool log_valences = false;   // valence charts on a log scale
+  std::string shown_notice;    // the session's message as last drawn, and since when
+  double notice_since = 0.0;
 };
 
 // Fills run on `worker`; while it is busy the controls that change the session are disabled.

@@ -1,0 +1,86 @@
+#include "hole_table.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace holefill::viewer {
+
+const char* to_string(HoleStatus status) {
+  switch (status) {
+    case HoleStatus::Open:
+      return "open";
+    case HoleStatus::Partial:
+      return "partial";
+    case HoleStatus::Filled:
+      return "filled";
+    case HoleStatus::Failed:
+      return "failed";
+  }
+  return "";
+}
+
+bool HoleView::shows(const HoleRow& row) const {
+  const bool any = only_open || only_filled || only_failed || only_intersecting;
+  if (!any) return true;
+  return (only_open && row.status == HoleStatus::Open) ||
+         (only_filled && row.status == HoleStatus::Filled) ||
+         (only_failed && row.status == HoleStatus::Failed) ||
+         (only_intersecting && row.intersecting);
+}
+
+double polygon_area(const std::vector<Point>& points) {
+  Point twice_area(0.0, 0.0, 0.0);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    twice_area += points[i] % points[(i + 1) % points.size()];
+  return 0.5 * twice_area.norm();
+}
+
+std::vector<HoleRow> hole_rows(const Session& session) {
+  std::vector<HoleRow> rows;
+  for (const auto& hole : session.holes()) {
+    const HoleFill& fill = session.fill(hole.id);
+    std::vector<Point> points;
+    for (const auto v : hole.vertices) points.push_back(session.mesh().point(v));
+    HoleRow row;
+    row.id = hole.id;
+    row.edges = hole.size();
+    row.perimeter = hole.perimeter;
+    row.area = polygon_area(points);
+    row.status = fill.failed()                     ? HoleStatus::Failed
+                 : fill.stage() == Stage::Smoothed ? HoleStatus::Filled
+                 : fill.stage() == Stage::Original ? HoleStatus::Open
+                                                   : HoleStatus::Partial;
+    row.stage = fill.failed() ? "failed" : to_string(fill.stage());
+    row.intersecting = fill.self_intersections > 0;
+    row.failure = fill.failure;
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::vector<HoleRow> arrange(std::vector<HoleRow> rows, const HoleView& view) {
+  std::erase_if(rows, [&](const HoleRow& row) { return !view.shows(row); });
+  const auto key = [&](const HoleRow& row) {
+    switch (view.column) {
+      case HoleColumn::Edges:
+        return static_cast<double>(row.edges);
+      case HoleColumn::Perimeter:
+        return row.perimeter;
+      case HoleColumn::Area:
+        return row.area;
+      case HoleColumn::Status:
+        return static_cast<double>(row.status);
+      case HoleColumn::Id:
+        break;
+    }
+    return static_cast<double>(row.id);
+  };
+  std::stable_sort(rows.begin(), rows.end(), [&](const HoleRow& a, const HoleRow& b) {
+    const double ka = key(a), kb = key(b);
+    if (ka != kb) return view.descending ? ka > kb : ka < kb;
+    return a.id < b.id;
+  });
+  return rows;
+}
+
+}  // namespace holefill::viewer

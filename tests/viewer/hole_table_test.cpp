@@ -1,0 +1,95 @@
+#include "hole_table.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "valence_bins.h"
+
+namespace holefill::viewer {
+namespace {
+
+Session bunny() {
+  Session session;
+  EXPECT_TRUE(session.open(std::filesystem::path(HOLEFILL_TEST_ASSETS) / "bunny.obj"));
+  return session;
+}
+
+std::vector<int> ids(const std::vector<HoleRow>& rows) {
+  std::vector<int> result;
+  for (const auto& row : rows) result.push_back(row.id);
+  return result;
+}
+
+TEST(HoleTable, PolygonAreaOfAUnitSquareInAnyPlane) {
+  EXPECT_DOUBLE_EQ(polygon_area({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}), 1.0);
+  EXPECT_DOUBLE_EQ(polygon_area({{0, 0, 0}, {0, 2, 0}, {0, 2, 3}, {0, 0, 3}}), 6.0);
+}
+
+TEST(HoleTable, SortsByEveryColumnBothWays) {
+  Session session = bunny();  // holes of 99, 37 and 28 edges
+  session.select(1);
+  ASSERT_TRUE(session.fill_selected());
+  const auto rows = hole_rows(session);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_GT(rows[0].area, rows[1].area);
+  EXPECT_GT(rows[1].area, rows[2].area);
+  HoleView view;
+  EXPECT_EQ(ids(arrange(rows, view)), (std::vector<int>{0, 1, 2}));
+  view.column = HoleColumn::Edges;
+  EXPECT_EQ(ids(arrange(rows, view)), (std::vector<int>{2, 1, 0}));
+  view.descending = true;
+  EXPECT_EQ(ids(arrange(rows, view)), (std::vector<int>{0, 1, 2}));
+  view.column = HoleColumn::Perimeter;
+  EXPECT_EQ(ids(arrange(rows, view)), (std::vector<int>{0, 1, 2}));
+  view.column = HoleColumn::Area;
+  view.descending = false;
+  EXPECT_EQ(ids(arrange(rows, view)), (std::vector<int>{2, 1, 0}));
+  view.column = HoleColumn::Status;  // open before filled, ties by id
+  EXPECT_EQ(ids(arrange(rows, view)), (std::vector<int>{0, 2, 1}));
+}
+
+TEST(HoleTable, FiltersByStatus) {
+  Session session = bunny();
+  session.select(2);
+  ASSERT_TRUE(session.fill_selected());
+  session.select(0);
+  ASSERT_TRUE(session.step(Stage::Triangulated));
+  const auto rows = hole_rows(session);
+  EXPECT_EQ(rows[0].status, HoleStatus::Partial);
+  EXPECT_STREQ(rows[0].stage, "triangulated");
+  HoleView view;
+  view.only_filled = true;
+  EXPECT_EQ(ids(arrange(rows, view)), (std::vector<int>{2}));
+  view.only_open = true;  // either
+  EXPECT_EQ(ids(arrange(rows, view)), (std::vector<int>{1, 2}));
+  view = {};
+  view.only_failed = true;
+  EXPECT_TRUE(arrange(rows, view).empty());
+}
+
+TEST(ValenceBins, OutliersFallInTheEndBinsAndEveryVertexCounts) {
+  const auto bins = valence_bins({{0, 1}, {2, 3}, {3, 4}, {6, 50}, {9, 2}, {10, 5}, {17, 1}});
+  EXPECT_STREQ(bins[0].label, "<=2");
+  EXPECT_EQ(bins[0].count, 4u);
+  EXPECT_EQ(bins[1].count, 4u);   // valence 3
+  EXPECT_EQ(bins[4].count, 50u);  // valence 6
+  EXPECT_STREQ(bins[4].label, "6");
+  EXPECT_EQ(bins[7].count, 2u);  // valence 9
+  EXPECT_STREQ(bins[8].label, ">=10");
+  EXPECT_EQ(bins[8].count, 6u);
+  std::size_t total = 0;
+  for (const auto& bin : bins) total += bin.count;
+  EXPECT_EQ(total, 66u);
+}
+
+TEST(ValenceBins, LogHeightsKeepSmallBinsVisible) {
+  EXPECT_DOUBLE_EQ(bar_height(50, 100, false), 0.5);
+  EXPECT_DOUBLE_EQ(bar_height(100, 100, true), 1.0);
+  EXPECT_GT(bar_height(10, 100000, true), 0.2);
+  EXPECT_LT(bar_height(10, 100000, false), 1e-3);
+  EXPECT_DOUBLE_EQ(bar_height(0, 0, true), 0.0);
+}
+
+}  // namespace
+}  // namespace holefill::viewer
