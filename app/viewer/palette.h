@@ -16,6 +16,7 @@ inline constexpr Rgb kRefined{89, 204, 115};       // faces the refinement added
 inline constexpr Rgb kWireframe{40, 40, 48};
 inline constexpr Rgb kPatchVertex{230, 40, 25};
 inline constexpr Rgb kBoundary{255, 140, 0};  // an unfilled hole's boundary loop
+inline constexpr Rgb kBorder{0, 170, 150};    // a loop that looks like an open surface's border
 inline constexpr Rgb kSelectedBoundary{255, 0, 255};
 inline constexpr Rgb kHoveredBoundary{0, 255, 255};
 inline constexpr Rgb kDivider{255, 216, 0};  // between the comparison's two views

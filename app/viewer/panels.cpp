@@ -151,7 +151,7 @@ void hole_row(Session& session, const HoleRow& row, bool scroll_here) {
   ImGui::TableNextRow();
   ImGui::TableNextColumn();
   char label[32];
-  std::snprintf(label, sizeof label, "%d", row.id);
+  std::snprintf(label, sizeof label, "%d%s", row.id, session.is_border(row.id) ? " border" : "");
   if (ImGui::Selectable(label, session.selected() == row.id, ImGuiSelectableFlags_SpanAllColumns)) {
     session.select(row.id);
   }
@@ -421,9 +421,13 @@ ImVec4 color(const palette::Rgb& c) {
 
 void legend() {
   const std::pair<const palette::Rgb*, const char*> entries[] = {
-      {&palette::kTriangulated, "triangulated"}, {&palette::kRefined, "refined"},
-      {&palette::kPatchVertex, "new vertex"},    {&palette::kBoundary, "hole"},
-      {&palette::kSelectedBoundary, "selected"}, {&palette::kHoveredBoundary, "hovered"}};
+      {&palette::kTriangulated, "triangulated"},
+      {&palette::kRefined, "refined"},
+      {&palette::kPatchVertex, "new vertex"},
+      {&palette::kBoundary, "hole"},
+      {&palette::kSelectedBoundary, "selected"},
+      {&palette::kHoveredBoundary, "hovered"},
+      {&palette::kBorder, "border"}};
   for (std::size_t i = 0; i < std::size(entries); ++i) {
     if (i % 3) ImGui::SameLine();
     ImGui::TextColored(color(*entries[i].first), "# %-12s", entries[i].second);

@@ -20,11 +20,16 @@ void clear_rect(const PixelRect& rect, int framebuffer_height, const palette::Rg
 }
 
 template <class Layer>
-void upload(Layer& layer, const Mesh& mesh, const std::vector<Hole>& holes,
+void upload(Layer& layer, const Mesh& mesh, const Session& session,
             const std::vector<const HoleFill*>& fills) {
   const SurfaceArrays arrays = surface_arrays(mesh, fills);
   layer.surface.upload(arrays);
+  std::vector<Hole> holes, borders;
+  for (const auto& hole : session.holes()) {
+    (session.is_border(hole.id) ? borders : holes).push_back(hole);
+  }
   layer.boundary.upload(boundary_segments(mesh, holes));
+  layer.borders.upload(boundary_segments(mesh, borders));
   layer.radius = std::max(0.5f * glm::length(arrays.hi - arrays.lo), 1e-6f);
 }
 
@@ -48,13 +53,13 @@ void Renderer::sync(Session& session) {
   if (main_.version != session.mesh_version()) {
     std::vector<const HoleFill*> fills;
     for (const auto& hole : session.holes()) fills.push_back(&session.fill(hole.id));
-    upload(main_, session.mesh(), session.holes(), fills);
+    upload(main_, session.mesh(), session, fills);
     main_.version = session.mesh_version();
   }
   if (const Comparison* comparison = session.comparison();
       comparison && left_.version != session.comparison_version()) {
-    upload(left_, comparison->left.mesh, session.holes(), {&comparison->left.fill});
-    upload(right_, comparison->right.mesh, session.holes(), {&comparison->right.fill});
+    upload(left_, comparison->left.mesh, session, {&comparison->left.fill});
+    upload(right_, comparison->right.mesh, session, {&comparison->right.fill});
     left_.version = right_.version = session.comparison_version();
   }
 }
@@ -140,6 +145,8 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
   line_program_.set("u_selected_color", rgba(palette::kSelectedBoundary));
   line_program_.set("u_hovered_color", rgba(palette::kHoveredBoundary));
   layer.boundary.draw();
+  line_program_.set("u_color", rgba(palette::kBorder));
+  layer.borders.draw();
   glDisable(GL_DEPTH_TEST);
 }
 

@@ -40,6 +40,7 @@ class Renderer {
   struct MeshLayer {
     MeshBuffers surface;
     BoundaryBuffers boundary;
+    BoundaryBuffers borders;  // loops that look like the border of an open surface
     std::uint64_t version = ~std::uint64_t{0};
     float radius = 1.0f;
   };

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 
+#include "holefill/borders.h"
 #include "holefill/errors.h"
 #include "holefill/io.h"
 #include "holefill/stitch.h"
@@ -45,6 +46,10 @@ void Session::load(Mesh mesh, std::string name) {
   name_ = std::move(name);
   loaded_ = std::move(mesh);
   holes_ = find_holes(loaded_);
+  borders_.clear();
+  for (const auto& loop : classify_loops(loaded_, holes_, mesh_pieces(loaded_))) {
+    borders_.push_back(loop.kind == LoopKind::Border);
+  }
   log_.clear();
   undo_.clear();
   redo_.clear();

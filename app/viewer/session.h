@@ -68,6 +68,8 @@ class Session {
   const std::string& name() const { return name_; }
   const Mesh& mesh() const { return mesh_; }
   const std::vector<Hole>& holes() const { return holes_; }
+  // Whether loop `hole_id` looks like the border of an open surface (borders.h).
+  bool is_border(int hole_id) const { return borders_.at(hole_id); }
   const HoleFill& fill(int hole_id) const { return fills_.at(hole_id); }
   // A new number whenever mesh() changes (unique across sessions), so a renderer knows when to
   // upload it again.
@@ -155,6 +157,7 @@ class Session {
   Mesh loaded_;
   Mesh mesh_;
   std::vector<Hole> holes_;
+  std::vector<bool> borders_;  // per hole, from classify_loops
   std::vector<HoleFill> fills_;
   std::vector<FillStep> log_;
   std::vector<Snapshot> undo_;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 namespace holefill::viewer {
 namespace {
@@ -37,6 +38,32 @@ TEST(Session, OpensTheBunnyWithItsThreeHolesLargestFirst) {
   EXPECT_EQ(session.holes()[0].size(), 99u);
   EXPECT_EQ(session.selected(), -1);
   EXPECT_FALSE(session.next_stage());
+}
+
+TEST(Session, MarksTheBorderOfAnOpenSurfaceAndNoLoopOfAClosedOne) {
+  Session session;
+  ASSERT_TRUE(session.open(std::filesystem::path(HOLEFILL_TEST_ASSETS) / "ragged_disk.obj"));
+  ASSERT_EQ(session.holes().size(), 2u);
+  EXPECT_TRUE(session.is_border(0));  // the height field's outer rim
+  EXPECT_FALSE(session.is_border(1));
+  session = bunny_session();
+  for (const auto& hole : session.holes()) EXPECT_FALSE(session.is_border(hole.id));
+}
+
+TEST(Session, StitchesSeamsWhenItOpensAMesh) {
+  // Two triangles of a square, each with its own copies of the diagonal's ends.
+  const auto file = std::filesystem::temp_directory_path() / "holefill_session_seam.obj";
+  {
+    std::ofstream out(file);
+    out << "v 0 0 0\nv 1 0 0\nv 1 1 0.5\nv 0 0 0\nv 1 1 0.5\nv 0 1 0\nf 1 2 3\nf 4 5 6\n";
+  }
+  Session session;
+  ASSERT_TRUE(session.open(file)) << session.notice().text;
+  std::filesystem::remove(file);
+  EXPECT_EQ(session.mesh().n_vertices(), 4u);
+  EXPECT_EQ(session.holes().size(), 1u);
+  EXPECT_NE(session.notice().text.find("Stitched 1 boundary edges"), std::string::npos)
+      << session.notice().text;
 }
 
 TEST(Session, StagesRunInOrderOnTheSelectedHole) {
