@@ -2,19 +2,44 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace holefill::viewer {
+
+namespace {
+
+// Computes `request` (a FillRequest or a LogChange) on the worker and applies it when done.
+template <class Request>
+bool start_compute(Worker& worker, Session& session, std::string label, const Request& request) {
+  return worker.start(std::move(label), [&session, request](Progress& progress) -> Worker::Finish {
+    auto result =
+        std::make_shared<decltype(session.compute(request))>(session.compute(request, &progress));
+    if (!*result) return {};
+    return [&session, result] { session.apply(std::move(**result)); };
+  });
+}
+
+}  // namespace
 
 bool start_fill(Worker& worker, Session& session, const std::optional<FillRequest>& request) {
   if (!request) return false;
   const std::string label = request->hole_ids.size() == 1
                                 ? "Filling hole " + std::to_string(request->hole_ids[0])
                                 : "Filling " + std::to_string(request->hole_ids.size()) + " holes";
-  return worker.start(label, [&session, request = *request](Progress& progress) -> Worker::Finish {
-    auto result = std::make_shared<std::optional<FillResult>>(session.compute(request, &progress));
-    if (!*result) return {};
-    return [&session, result] { session.apply(std::move(**result)); };
-  });
+  return start_compute(worker, session, label, *request);
+}
+
+bool start_change(Worker& worker, Session& session, const std::optional<LogChange>& change) {
+  if (!change) return false;
+  const char* labels[] = {"Undoing", "Redoing", "Resetting the hole", "Applying the options"};
+  return start_compute(worker, session, labels[static_cast<int>(change->kind)], *change);
+}
+
+bool start_options(Worker& worker, Session& session, const FillOptions& options) {
+  if (worker.busy()) return false;
+  if (!start_change(worker, session, session.options_request(options)))
+    session.set_options(options);
+  return true;
 }
 
 bool start_open(Worker& worker, Session& session, FileActions& files,

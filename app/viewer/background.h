@@ -1,5 +1,6 @@
 // The session's long operations as Worker jobs: fills computed on a copy and applied when done,
-// and opening a mesh into a new session that replaces the current one when it is read. No GL.
+// undo, redo, reset and option changes rebuilt the same way, and opening a mesh into a new
+// session that replaces the current one when it is read. No GL.
 #pragma once
 
 #include <filesystem>
@@ -14,6 +15,14 @@ namespace holefill::viewer {
 // Starts `request` (from Session's *_request) on the worker; false when there is nothing to do
 // or the worker is busy. While it runs the caller must not step, undo, reset or change options.
 bool start_fill(Worker& worker, Session& session, const std::optional<FillRequest>& request);
+
+// Starts `change` (from Session's undo_request, redo_request, reset_request, options_request);
+// false when there is nothing to do or the worker is busy. The same rule holds while it runs.
+bool start_change(Worker& worker, Session& session, const std::optional<LogChange>& change);
+
+// Sets the session's options: at once when no filled hole is selected, else by re-running that
+// hole's steps on the worker. False when the worker is busy (nothing changes).
+bool start_options(Worker& worker, Session& session, const FillOptions& options);
 
 // Starts reading `path` into a new session; when done it replaces `session` and tells `files`
 // (opened), or, when the file cannot be read, leaves the session and shows why (notice).

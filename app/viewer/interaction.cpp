@@ -54,17 +54,8 @@ std::vector<Request> Interaction::take_requests() { return std::exchange(request
 
 void Interaction::run(Command command, Camera& camera, Session& session) {
   switch (command) {
-    case Command::Undo:
-      session.undo();
-      break;
-    case Command::Redo:
-      session.redo();
-      break;
     case Command::Deselect:
       session.select(-1);
-      break;
-    case Command::ResetHole:
-      session.reset_selected();
       break;
     case Command::Frame:
       if (session.selected() >= 0)

@@ -1,9 +1,9 @@
 // What mouse and keys do in the 3D view: left drag orbits (arcball), right or middle drag (or
 // shift + left) pans, the wheel zooms toward the cursor, a left click picks a hole. Keys follow
-// the shortcut table (shortcuts.h): those about the view and the session (undo, redo, deselect,
-// reset hole, frame, reset view) are carried out here; those about files, help and screenshots,
-// and dropped files, are handed to the frame loop as requests. No GL: it moves the camera and
-// calls the session.
+// the shortcut table (shortcuts.h): those about the view and the selection (deselect, frame,
+// reset view) are carried out here; those that change the mesh (undo, redo, reset hole, fills,
+// which run on the worker), those about files, help and screenshots, and dropped files, are
+// handed to the frame loop as requests. No GL: it moves the camera and calls the session.
 #pragma once
 
 #include <filesystem>

@@ -132,6 +132,15 @@ void carry_out(const hv::Request& request, hv::FileActions& files, hv::Session& 
       hv::start_fill(worker, session,
                      session.fill_all_request(static_cast<std::size_t>(ui.fill_all_max_edges)));
       break;
+    case hv::Command::Undo:
+      hv::start_change(worker, session, session.undo_request());
+      break;
+    case hv::Command::Redo:
+      hv::start_change(worker, session, session.redo_request());
+      break;
+    case hv::Command::ResetHole:
+      hv::start_change(worker, session, session.reset_request());
+      break;
     case hv::Command::Help:
       ui.show_help = true;
       break;

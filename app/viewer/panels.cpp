@@ -224,8 +224,9 @@ bool tau_slider(float& tau, SliderEdit& edit) {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 70.0f);
   edit.after_item(ImGui::SliderFloat("##tau", &tau, 1.0f, 2.0f, "tau = %.3f"));
   tooltip(
-      "Refinement density: a triangle is split while its edges are longer than tau times the "
-      "boundary's scale. Smaller tau: denser patch. The tick is sqrt 2 (the paper's).");
+      "Refinement density: a triangle is split while tau times the distance from its centroid "
+      "to a corner exceeds the corners' edge scale. Larger tau: denser patch. The tick is "
+      "sqrt 2 (the paper's).");
   const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
   const float grab = ImGui::GetStyle().GrabMinSize;
   const float x = lo.x + grab * 0.5f + (kSqrt2 - 1.0f) * (hi.x - lo.x - grab);
@@ -242,9 +243,12 @@ bool tau_slider(float& tau, SliderEdit& edit) {
 }
 
 // Combos, checkboxes and buttons apply at once; sliders show their value while dragged and
-// apply it where the user lets go, so a drag re-runs the fill once, not at every step.
-void options_section(Session& session, UiState& ui) {
-  FillOptions options = ui.dragged_options.value_or(session.options());
+// apply it where the user lets go, so a drag re-runs the fill once, not at every step. The
+// selected hole's steps re-run on the worker; meanwhile the new values stay shown.
+void options_section(Session& session, Worker& worker, UiState& ui) {
+  if (!worker.busy()) ui.applying_options.reset();
+  FillOptions options =
+      ui.dragged_options.value_or(ui.applying_options.value_or(session.options()));
   bool changed = false;
   SliderEdit slider;
   const WeightKind kinds[] = {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area};
@@ -295,7 +299,7 @@ void options_section(Session& session, UiState& ui) {
   ImGui::EndDisabled();
   if (changed || slider.released) {
     ui.dragged_options.reset();
-    session.set_options(options);
+    if (start_options(worker, session, options) && worker.busy()) ui.applying_options = options;
   } else if (slider.moved) {
     ui.dragged_options = options;
   }
@@ -322,7 +326,7 @@ void step_section(Session& session, Worker& worker, UiState& ui) {
       session.selected() < 0 || (session.fill(session.selected()).stage() == Stage::Original &&
                                  !session.fill(session.selected()).failed());
   ImGui::BeginDisabled(untouched);
-  if (ImGui::Button("Reset hole")) session.reset_selected();
+  if (ImGui::Button("Reset hole")) start_change(worker, session, session.reset_request());
   tooltip("Take the selected hole's patch out again (Delete)");
   ImGui::EndDisabled();
 
@@ -343,12 +347,12 @@ void step_section(Session& session, Worker& worker, UiState& ui) {
       "command line's --max-boundary");
   ImGui::SameLine();
   ImGui::BeginDisabled(!session.can_undo());
-  if (ImGui::Button("Undo")) session.undo();
+  if (ImGui::Button("Undo")) start_change(worker, session, session.undo_request());
   tooltip("Ctrl+Z");
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(!session.can_redo());
-  if (ImGui::Button("Redo")) session.redo();
+  if (ImGui::Button("Redo")) start_change(worker, session, session.redo_request());
   tooltip("Ctrl+Y or Ctrl+Shift+Z");
   ImGui::EndDisabled();
 }
@@ -460,7 +464,7 @@ void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& 
   hole_list(session, ui);
   ImGui::Separator();
   ImGui::BeginDisabled(worker.busy());
-  options_section(session, ui);
+  options_section(session, worker, ui);
   step_section(session, worker, ui);
   ImGui::EndDisabled();
   ImGui::Separator();

@@ -25,8 +25,10 @@ struct UiState {
   bool reset_view = false;
   bool take_screenshot = false;
   bool show_help = false;
-  // The options while a slider is dragged (applied where it is let go).
+  // The options while a slider is dragged (applied where it is let go), and while the worker
+  // applies them.
   std::optional<FillOptions> dragged_options;
+  std::optional<FillOptions> applying_options;
   int fill_all_max_edges = 0;  // "Fill holes up to N edges"; 0: all
   HoleView holes;              // the hole list's order and filters
   int listed_selection = -1;   // the selection the list last showed (it scrolls to a new one)

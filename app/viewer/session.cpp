@@ -1,7 +1,6 @@
 #include "session.h"
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 
 #include "holefill/borders.h"
@@ -12,11 +11,17 @@
 namespace holefill::viewer {
 namespace {
 
-// Versions are unique across sessions, so a renderer that drew one session notices when another
-// (a mesh opened on the worker) takes its place.
-std::uint64_t next_version() {
-  static std::atomic<std::uint64_t> last{0};
-  return ++last;
+// The options hole_id's last step used; `fallback` when it has none.
+FillOptions options_of(const std::vector<FillStep>& log, int hole_id, const FillOptions& fallback) {
+  for (auto it = log.rbegin(); it != log.rend(); ++it) {
+    if (it->hole_id == hole_id) return it->options;
+  }
+  return fallback;
+}
+
+std::vector<FillStep> without_hole(std::vector<FillStep> log, int hole_id) {
+  std::erase_if(log, [hole_id](const FillStep& step) { return step.hole_id == hole_id; });
+  return log;
 }
 
 }  // namespace
@@ -55,7 +60,7 @@ void Session::load(Mesh mesh, std::string name) {
   redo_.clear();
   selected_ = -1;
   revision_ = saved_revision_ = last_revision_ = 0;
-  replay();
+  take({loaded_, std::vector<HoleFill>(holes_.size())}, {});
 }
 
 bool Session::save(const std::filesystem::path& path) {
@@ -77,25 +82,13 @@ void Session::select(int hole_id) {
   last_change_was_options_ = false;
   comparison_stale_ = true;
   // A stepped hole shows the options it was filled with.
-  for (auto it = log_.rbegin(); it != log_.rend(); ++it) {
-    if (it->hole_id == hole_id) {
-      options_ = it->options;
-      break;
-    }
-  }
+  options_ = options_of(log_, hole_id, options_);
 }
 
 void Session::set_options(const FillOptions& options) {
+  if (run(options_request(options))) return;
   options_ = options;
   comparison_stale_ = true;
-  if (selected_ < 0 || !has_steps(selected_)) return;
-  if (!last_change_was_options_) remember();
-  last_change_was_options_ = true;
-  for (auto& step : log_) {
-    if (step.hole_id == selected_) step.options = options_;
-  }
-  revised();
-  replay();
 }
 
 std::optional<Stage> Session::next_stage() const {
@@ -115,6 +108,12 @@ bool Session::run(const std::optional<FillRequest>& request) {
   const bool ran = request->one_stage ? result->mesh_changed : result->all_ran;
   apply(std::move(*result));
   return ran;
+}
+
+bool Session::run(const std::optional<LogChange>& change) {
+  if (!change) return false;
+  apply(std::move(*compute(*change)));
+  return true;
 }
 
 std::optional<FillRequest> Session::step_request(Stage stage) const {
@@ -160,19 +159,23 @@ std::optional<FillRequest> Session::fill_all_request(std::size_t max_edges) cons
 
 std::optional<FillResult> Session::compute(const FillRequest& request, Progress* progress) const {
   FillResult result;
-  result.mesh = mesh_;
-  result.fills = fills_;
+  result.state = {mesh_, fills_};
   result.log = log_;
+  // One hole's steps keep the states before them, for option changes and undo (replay.h).
+  if (request.hole_ids.size() == 1)
+    result.checkpoints = continue_checkpoints(checkpoints_, log_, request.hole_ids[0]);
   // Progress counts boundary edges, a rough measure of each hole's share of the work.
   double total = 0.0, done = 0.0;
   for (const int id : request.hole_ids) total += static_cast<double>(holes_[id].size());
   for (const int id : request.hole_ids) {
     if (progress && progress->cancelled()) return std::nullopt;
-    HoleFill& fill = result.fills[id];
+    HoleFill& fill = result.state.fills[id];
     while (unfinished(fill)) {
-      const bool ran = advance(result.mesh, holes_[id], fill, request.options);
+      const FillStep step = make_step(id, request.options);
+      const bool ran = run_step(result.state, holes_, step, &result.checkpoints, progress);
+      if (progress && progress->cancelled()) return std::nullopt;
       // A failed stage is logged too, so that replay shows the same failure in the hole list.
-      if (ran || fill.failed()) result.log.push_back({id, request.options});
+      if (ran || fill.failed()) result.log.push_back(step);
       result.mesh_changed = result.mesh_changed || ran;
       if (!ran || request.one_stage) break;
     }
@@ -184,45 +187,84 @@ std::optional<FillResult> Session::compute(const FillRequest& request, Progress*
     if (progress) progress->set_fraction(done / total);
   }
   if (progress && progress->cancelled()) return std::nullopt;
-  if (request.summarise) result.notice = summary(request.hole_ids, result.fills);
+  if (request.summarise) result.notice = summary(request.hole_ids, result.state.fills);
   return result;
 }
 
 void Session::apply(FillResult result) {
   remember();
-  mesh_ = std::move(result.mesh);
-  fills_ = std::move(result.fills);
   log_ = std::move(result.log);
   if (result.mesh_changed) revised();
   if (!result.notice.text.empty()) notice_ = std::move(result.notice);
-  changed();
+  take(std::move(result.state), std::move(result.checkpoints));
 }
 
-bool Session::reset_selected() {
-  if (selected_ < 0 || !has_steps(selected_)) return false;
-  remember();
-  std::erase_if(log_, [this](const FillStep& step) { return step.hole_id == selected_; });
-  revised();
-  replay();
-  return true;
+bool Session::reset_selected() { return run(reset_request()); }
+bool Session::undo() { return run(undo_request()); }
+bool Session::redo() { return run(redo_request()); }
+
+std::optional<LogChange> Session::undo_request() const {
+  if (undo_.empty()) return std::nullopt;
+  const Snapshot& to = undo_.back();
+  return LogChange{LogChange::Kind::Undo, to.log, to.selected, to.revision,
+                   options_of(to.log, to.selected, options_)};
 }
 
-bool Session::undo() {
-  if (undo_.empty()) return false;
-  redo_.push_back({log_, selected_, revision_});
-  Snapshot snapshot = std::move(undo_.back());
-  undo_.pop_back();
-  restore(std::move(snapshot));
-  return true;
+std::optional<LogChange> Session::redo_request() const {
+  if (redo_.empty()) return std::nullopt;
+  const Snapshot& to = redo_.back();
+  return LogChange{LogChange::Kind::Redo, to.log, to.selected, to.revision,
+                   options_of(to.log, to.selected, options_)};
 }
 
-bool Session::redo() {
-  if (redo_.empty()) return false;
-  undo_.push_back({log_, selected_, revision_});
-  Snapshot snapshot = std::move(redo_.back());
-  redo_.pop_back();
-  restore(std::move(snapshot));
-  return true;
+std::optional<LogChange> Session::reset_request() const {
+  if (selected_ < 0 || !has_steps(selected_)) return std::nullopt;
+  return LogChange{LogChange::Kind::Reset, without_hole(log_, selected_), selected_, 0, options_};
+}
+
+std::optional<LogChange> Session::options_request(const FillOptions& options) const {
+  if (selected_ < 0 || !has_steps(selected_) || options == options_) return std::nullopt;
+  LogChange change{LogChange::Kind::Options, log_, selected_, 0, options};
+  for (auto& step : change.log) {
+    if (step.hole_id == selected_) step = make_step(selected_, options);
+  }
+  return change;
+}
+
+std::optional<ChangeResult> Session::compute(const LogChange& change, Progress* progress) const {
+  auto rebuilt = rebuild(loaded_, holes_, change.log, change.selected, checkpoints_, progress);
+  if (!rebuilt) return std::nullopt;
+  return ChangeResult{change, std::move(*rebuilt)};
+}
+
+void Session::apply(ChangeResult result) {
+  LogChange& change = result.change;
+  switch (change.kind) {
+    case LogChange::Kind::Undo:
+      redo_.push_back({std::move(log_), selected_, revision_});
+      undo_.pop_back();
+      revision_ = change.revision;
+      break;
+    case LogChange::Kind::Redo:
+      undo_.push_back({std::move(log_), selected_, revision_});
+      redo_.pop_back();
+      revision_ = change.revision;
+      break;
+    case LogChange::Kind::Reset:
+      remember();
+      revised();
+      break;
+    case LogChange::Kind::Options:
+      // A run of option changes (a slider moved several times) is undone as one.
+      if (!last_change_was_options_) remember();
+      revised();
+      break;
+  }
+  last_change_was_options_ = change.kind == LogChange::Kind::Options;
+  log_ = std::move(change.log);
+  selected_ = change.selected;
+  options_ = change.options;
+  take(std::move(result.rebuilt.state), std::move(result.rebuilt.checkpoints));
 }
 
 const std::map<int, std::size_t>& Session::mesh_valences() {
@@ -253,17 +295,13 @@ void Session::set_compare_mode(CompareMode mode) {
 const Comparison* Session::comparison() {
   if (!compare_ || selected_ < 0) return nullptr;
   if (comparison_stale_ || !comparison_) {
-    // The hole as it is before its own steps: the log without them, replayed.
-    Mesh mesh = loaded_;
-    std::vector<HoleFill> fills(holes_.size());
-    for (const auto& step : log_) {
-      if (step.hole_id != selected_)
-        advance(mesh, holes_[step.hole_id], fills[step.hole_id], step.options);
-    }
-    comparison_ = make_comparison(mesh, holes_[selected_], options_, compare_mode_,
+    // The hole as it is before its own steps: the log without them (kept, usually).
+    const auto before =
+        rebuild(loaded_, holes_, without_hole(log_, selected_), selected_, checkpoints_, nullptr);
+    comparison_ = make_comparison(before->state.mesh, holes_[selected_], options_, compare_mode_,
                                   compare_triangulation_only_);
     comparison_stale_ = false;
-    comparison_version_ = next_version();
+    comparison_version_ = next_serial();
   }
   return &*comparison_;
 }
@@ -275,25 +313,10 @@ void Session::remember() {
   last_change_was_options_ = false;
 }
 
-void Session::restore(Snapshot snapshot) {
-  log_ = std::move(snapshot.log);
-  selected_ = snapshot.selected;
-  revision_ = snapshot.revision;
-  last_change_was_options_ = false;
-  for (auto it = log_.rbegin(); it != log_.rend(); ++it) {
-    if (it->hole_id == selected_) {
-      options_ = it->options;
-      break;
-    }
-  }
-  replay();
-}
-
-void Session::replay() {
-  mesh_ = loaded_;
-  fills_.assign(holes_.size(), HoleFill{});
-  for (const auto& step : log_)
-    advance(mesh_, holes_[step.hole_id], fills_[step.hole_id], step.options);
+void Session::take(MeshState state, Checkpoints checkpoints) {
+  mesh_ = std::move(state.mesh);
+  fills_ = std::move(state.fills);
+  checkpoints_ = std::move(checkpoints);
   changed();
 }
 
@@ -305,7 +328,9 @@ bool Session::has_steps(int hole_id) const {
 void Session::revised() { revision_ = ++last_revision_; }
 
 void Session::changed() {
-  mesh_version_ = next_version();
+  // Versions are unique across sessions, so a renderer that drew one session notices when
+  // another (a mesh opened on the worker) takes its place.
+  mesh_version_ = next_serial();
   comparison_stale_ = true;
 }
 

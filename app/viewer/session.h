@@ -2,11 +2,14 @@
 // progress through the stages (holefill::advance), the fill options, undo/redo, and the
 // comparison of two weights on the selected hole. No GL and no window: tests drive it directly.
 //
-// The session's state is a log of stage steps, each "advance hole h with these options", applied
-// in order to the mesh as loaded. A step extends the log and runs on the current mesh; undo,
-// redo, reset and a parameter change rebuild the mesh by replaying the log from the loaded mesh.
-// Replay runs the same operations in the same order, so undo restores the mesh exactly, and the
-// history costs a few bytes per step instead of a mesh copy.
+// The session's state is a log of stage steps (replay.h), each "advance hole h with these
+// options", applied in order to the mesh as loaded. A step extends the log and runs on the
+// current mesh; undo, redo, reset and an option change give another log, whose mesh is rebuilt
+// from the states kept before the selected hole's steps (a change of τ re-runs refinement and
+// smoothing only) or, failing that, by replaying the log from the loaded mesh. Replay runs the
+// same operations in the same order, so undo restores the mesh exactly, and the history costs a
+// few bytes per step instead of a mesh copy. Each long operation comes as a request that
+// compute() runs (on a worker, with progress and cancel) and apply() takes in.
 #pragma once
 
 #include <cstdint>
@@ -20,13 +23,9 @@
 #include "comparison.h"
 #include "holefill/fill.h"
 #include "holefill/progress.h"
+#include "replay.h"
 
 namespace holefill::viewer {
-
-struct FillStep {
-  int hole_id = -1;
-  FillOptions options;
-};
 
 struct Notice {
   std::string text;
@@ -44,12 +43,28 @@ struct FillRequest {
 // What a fill made, computed apart from the session (Session::compute) and taken in as one
 // undoable action (Session::apply).
 struct FillResult {
-  Mesh mesh;
-  std::vector<HoleFill> fills;
+  MeshState state;
+  Checkpoints checkpoints;
   std::vector<FillStep> log;
   bool mesh_changed = false;  // some stage ran
   bool all_ran = true;        // no stage failed
   Notice notice;
+};
+
+// Undo, redo, resetting the selected hole or changing its options: another log, whose mesh
+// Session::compute rebuilds and Session::apply takes in.
+struct LogChange {
+  enum class Kind { Undo, Redo, Reset, Options };
+  Kind kind = Kind::Undo;
+  std::vector<FillStep> log;
+  int selected = -1;
+  std::uint64_t revision = 0;  // undo, redo: the revision of that state
+  FillOptions options;         // the options the session shows afterwards
+};
+
+struct ChangeResult {
+  LogChange change;
+  Rebuilt rebuilt;
 };
 
 class Session {
@@ -84,7 +99,8 @@ class Session {
   void select(int hole_id);
 
   // The options the next step uses. Setting them while the selected hole has been stepped
-  // re-runs that hole's steps with the new options, so its statistics stay live.
+  // re-runs that hole's steps with the new options, so its statistics stay live (from the
+  // first stage they change: τ re-runs refinement and smoothing, not the triangulation).
   const FillOptions& options() const { return options_; }
   void set_options(const FillOptions& options);
 
@@ -118,6 +134,19 @@ class Session {
   bool can_redo() const { return !redo_.empty(); }
   bool undo();
   bool redo();
+
+  // The same four as log changes, for running them elsewhere: undo() is
+  // apply(*compute(*undo_request())). Nothing when there is nothing to do;
+  // options_request(options) also when the selected hole has no steps (set_options then only
+  // sets them).
+  std::optional<LogChange> undo_request() const;
+  std::optional<LogChange> redo_request() const;
+  std::optional<LogChange> reset_request() const;
+  std::optional<LogChange> options_request(const FillOptions& options) const;
+  // Rebuilds the mesh of `change`'s log. Reads the session only, like compute(FillRequest);
+  // reports the share of the steps it re-runs; nothing when cancelled.
+  std::optional<ChangeResult> compute(const LogChange& change, Progress* progress = nullptr) const;
+  void apply(ChangeResult result);
   static constexpr std::size_t kHistoryLimit = 200;
 
   const std::vector<FillStep>& log() const { return log_; }
@@ -146,9 +175,9 @@ class Session {
   };
 
   void remember();
-  void restore(Snapshot snapshot);
-  void replay();
+  void take(MeshState state, Checkpoints checkpoints);
   bool run(const std::optional<FillRequest>& request);
+  bool run(const std::optional<LogChange>& change);
   bool has_steps(int hole_id) const;
   void changed();
   void revised();
@@ -160,6 +189,7 @@ class Session {
   std::vector<bool> borders_;  // per hole, from classify_loops
   std::vector<HoleFill> fills_;
   std::vector<FillStep> log_;
+  Checkpoints checkpoints_;
   std::vector<Snapshot> undo_;
   std::vector<Snapshot> redo_;
   // Which state of the log the mesh shows: a new number for every edit, the snapshot's on undo

@@ -3,7 +3,7 @@
 # close requests as a window manager sends them) under the X server xvfb-run started.
 #   interactive.sh SCENARIO VIEWER CLOSE_REQUEST ASSETS WORKDIR
 # Scenarios: close-unsaved, close-saved, save-as, save-native, garbage-mesh, scripted-save,
-# fill-all, fill-all-cancel. Exits non-zero with a message on
+# fill-all, fill-all-cancel, undo-redo. Exits non-zero with a message on
 # the first expectation that does not hold.
 set -u
 scenario=$1 viewer=$2 close_request=$3 assets=$4 work=$5
@@ -103,6 +103,20 @@ save-native)
   grep -q -- "--filename=$work/bunny-filled.obj" zenity-args ||
     fail "zenity did not propose bunny-filled.obj: $(cat zenity-args)"
   "$close_request" "$window"
+  exits_within 20 0
+  ;;
+undo-redo)
+  # Undo and redo rebuild the mesh on the worker; the title's modified mark follows them.
+  start bunny.obj --select-hole 0 --run triangulate,refine
+  eventually 20 title_is "*bunny.obj - holefill viewer" || fail "title '$(title)' has no modified mark"
+  keys ctrl+z ctrl+z
+  eventually 20 title_is "bunny.obj - holefill viewer" || fail "Ctrl+Z twice left '$(title)'"
+  keys ctrl+y
+  eventually 20 title_is "*bunny.obj - holefill viewer" || fail "Ctrl+Y left '$(title)'"
+  screenshot undo-redo
+  keys ctrl+z
+  eventually 20 title_is "bunny.obj - holefill viewer" || fail "Ctrl+Z after redo left '$(title)'"
+  "$close_request" "$window"  # back at the saved state: quits at once
   exits_within 20 0
   ;;
 fill-all)

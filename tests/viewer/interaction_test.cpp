@@ -74,21 +74,6 @@ TEST(Interaction, ClicksOnThePanelAreLeftToTheUi) {
   EXPECT_EQ(scene.session.selected(), -1);
 }
 
-TEST(Interaction, ControlZUndoesAndControlYRedoes) {
-  Scene scene;
-  scene.session.select(2);
-  ASSERT_TRUE(scene.session.step(Stage::Triangulated));
-  InputEvent key;
-  key.kind = InputEvent::Kind::Key;
-  key.key = 'Z';
-  key.control = true;
-  scene.send(key);
-  EXPECT_EQ(scene.session.fill(2).stage(), Stage::Original);
-  key.key = 'Y';
-  scene.send(key);
-  EXPECT_EQ(scene.session.fill(2).stage(), Stage::Triangulated);
-}
-
 InputEvent key_event(int key, bool control = false, bool shift = false) {
   InputEvent event;
   event.kind = InputEvent::Kind::Key;
@@ -98,12 +83,26 @@ InputEvent key_event(int key, bool control = false, bool shift = false) {
   return event;
 }
 
-TEST(Interaction, DeleteResetsTheSelectedHoleAndEscapeDeselects) {
+// Undo, redo and reset rebuild the mesh, which may take long: the frame loop runs them on the
+// worker, so the interaction only hands them over.
+TEST(Interaction, UndoRedoAndDeleteAreHandedToTheFrameLoop) {
   Scene scene;
   scene.session.select(2);
   ASSERT_TRUE(scene.session.step(Stage::Triangulated));
+  scene.send(key_event('Z', true));
+  scene.send(key_event('Y', true));
   scene.send(key_event(kKeyDelete));
-  EXPECT_EQ(scene.session.fill(2).stage(), Stage::Original);
+  EXPECT_EQ(scene.session.fill(2).stage(), Stage::Triangulated);  // untouched until then
+  const auto requests = scene.interaction.take_requests();
+  ASSERT_EQ(requests.size(), 3u);
+  EXPECT_EQ(requests[0].command, Command::Undo);
+  EXPECT_EQ(requests[1].command, Command::Redo);
+  EXPECT_EQ(requests[2].command, Command::ResetHole);
+}
+
+TEST(Interaction, EscapeDeselects) {
+  Scene scene;
+  scene.session.select(2);
   scene.send(key_event(kKeyEscape));
   EXPECT_EQ(scene.session.selected(), -1);
 }

@@ -5,32 +5,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "test_sessions.h"
+
 namespace holefill::viewer {
 namespace {
-
-const std::filesystem::path kBunny = std::filesystem::path(HOLEFILL_TEST_ASSETS) / "bunny.obj";
-
-// Same vertex positions (bit for bit) and the same faces, in the same order.
-bool same_mesh(const Mesh& a, const Mesh& b) {
-  if (a.n_vertices() != b.n_vertices() || a.n_faces() != b.n_faces()) return false;
-  for (const auto v : a.vertices()) {
-    if (a.point(v) != b.point(VertexHandle(v.idx()))) return false;
-  }
-  for (const auto f : a.faces()) {
-    auto fa = a.cfv_iter(f);
-    auto fb = b.cfv_iter(FaceHandle(f.idx()));
-    for (int i = 0; i < 3; ++i, ++fa, ++fb) {
-      if (fa->idx() != fb->idx()) return false;
-    }
-  }
-  return true;
-}
-
-Session bunny_session() {
-  Session session;
-  EXPECT_TRUE(session.open(kBunny)) << session.notice().text;
-  return session;
-}
 
 TEST(Session, OpensTheBunnyWithItsThreeHolesLargestFirst) {
   Session session = bunny_session();

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "background.h"
+#include "test_sessions.h"
 
 namespace holefill::viewer {
 namespace {
@@ -17,14 +18,6 @@ const std::filesystem::path kAssets(HOLEFILL_TEST_ASSETS);
 void wait(Worker& worker) {
   while (!worker.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   EXPECT_FALSE(worker.busy());
-}
-
-bool same_points(const Mesh& a, const Mesh& b) {
-  if (a.n_vertices() != b.n_vertices() || a.n_faces() != b.n_faces()) return false;
-  for (const auto v : a.vertices()) {
-    if (a.point(v) != b.point(VertexHandle(v.idx()))) return false;
-  }
-  return true;
 }
 
 TEST(Worker, TheFinishingStepRunsOnThePollingThread) {
@@ -69,7 +62,7 @@ TEST(Background, FillAllOnTheWorkerMakesTheSameMeshAsInline) {
   Worker worker;
   ASSERT_TRUE(start_fill(worker, background_session, background_session.fill_all_request()));
   wait(worker);
-  EXPECT_TRUE(same_points(inline_session.mesh(), background_session.mesh()));
+  EXPECT_TRUE(same_mesh(inline_session.mesh(), background_session.mesh()));
   EXPECT_TRUE(background_session.modified());
   EXPECT_EQ(background_session.notice().text, "Filled 3 of 3 holes.");
   ASSERT_TRUE(background_session.undo());
@@ -88,7 +81,7 @@ TEST(Background, ACancelledFillLeavesTheSessionExactlyAsItWas) {
   ASSERT_TRUE(start_fill(worker, session, session.fill_all_request()));
   worker.cancel();
   wait(worker);
-  EXPECT_TRUE(same_points(before, session.mesh()));
+  EXPECT_TRUE(same_mesh(before, session.mesh()));
   EXPECT_EQ(session.log().size(), log_size);
   EXPECT_EQ(session.mesh_version(), version);
   EXPECT_EQ(session.fill(0).stage(), Stage::Original);
@@ -121,6 +114,43 @@ TEST(Background, FillAllUpToNEdgesLeavesTheLargerHoles) {
   EXPECT_EQ(session.fill(2).stage(), Stage::Smoothed);
   EXPECT_EQ(session.notice().text, "Filled 2 of 2 holes.");
   EXPECT_FALSE(session.fill_all_request(20));
+}
+
+TEST(Background, UndoAndOptionsRunOnTheWorkerAndCancelLeavesTheSession) {
+  Session session;
+  ASSERT_TRUE(session.open(kAssets / "bunny.obj"));
+  session.select(0);
+  ASSERT_TRUE(session.fill_selected());
+  const Mesh filled = session.mesh();
+  Worker worker;
+  FillOptions options = session.options();
+  options.refine.tau = 1.1;
+  ASSERT_TRUE(start_options(worker, session, options));
+  EXPECT_NE(session.options().refine.tau, 1.1);  // until the frame loop polls
+  wait(worker);
+  EXPECT_EQ(session.options().refine.tau, 1.1);
+  EXPECT_NE(session.mesh().n_faces(), filled.n_faces());  // a sparser patch
+
+  ASSERT_TRUE(start_change(worker, session, session.undo_request()));
+  worker.cancel();
+  wait(worker);
+  EXPECT_EQ(session.options().refine.tau, 1.1);
+  EXPECT_FALSE(session.can_redo());
+  ASSERT_TRUE(start_change(worker, session, session.undo_request()));
+  wait(worker);
+  EXPECT_TRUE(same_mesh(session.mesh(), filled));
+  EXPECT_TRUE(session.can_redo());
+}
+
+TEST(Background, OptionsWithNothingToRerunApplyAtOnce) {
+  Session session;
+  ASSERT_TRUE(session.open(kAssets / "bunny.obj"));
+  Worker worker;
+  FillOptions options = session.options();
+  options.smooth.iterations = 4;
+  ASSERT_TRUE(start_options(worker, session, options));
+  EXPECT_FALSE(worker.busy());
+  EXPECT_EQ(session.options().smooth.iterations, 4);
 }
 
 TEST(Background, OpeningOnTheWorkerReplacesTheSessionWhenRead) {

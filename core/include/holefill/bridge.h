@@ -27,6 +27,7 @@ struct JoinOptions {
   // Holes bridged on request (HoleSelection::bridges) may be at most this many times the larger
   // loop's diameter apart (closest vertices): farther, a band between them is no gap to close.
   double max_gap = 2.0;
+  bool operator==(const JoinOptions&) const = default;
 };
 
 struct JoinedLoops {

@@ -25,6 +25,7 @@ namespace holefill {
 struct FairOptions {
   int order = 2;                  // 2: bi-Laplacian (C1), 3: tri-Laplacian (C2)
   bool cotangent_weights = true;  // false: uniform (umbrella) weights
+  bool operator==(const FairOptions&) const = default;
 };
 
 struct FairResult {

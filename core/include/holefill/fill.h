@@ -29,6 +29,7 @@ struct FillOptions {
   // Re-triangulate a hole whose best triangulation intersects the mesh or itself, forbidding the
   // triangles that do (IntersectionAvoidance). Off: the weight's best is always kept.
   bool avoid_intersections = true;
+  bool operator==(const FillOptions&) const = default;
 };
 
 // What the intersection avoidance did for one hole: the weight's best triangulation had

@@ -26,6 +26,7 @@ namespace holefill {
 struct IslandOptions {
   bool detect = true;  // false: every loop is filled on its own (CLI --islands off)
   double reach = 1.0;  // how far from the outer hole's plane an island may lie, in its radius
+  bool operator==(const IslandOptions&) const = default;
 };
 
 // What find_islands found, indexed by hole id.

@@ -28,6 +28,7 @@ struct RefineOptions {
   // Not in the paper: remesh the refined patch toward valence 6 (see remesh.h).
   bool remesh = false;
   RemeshOptions remeshing;
+  bool operator==(const RefineOptions&) const = default;
 };
 
 struct RefineResult {

@@ -26,6 +26,7 @@ namespace holefill {
 struct RemeshOptions {
   int iterations = 5;                 // rounds of flips then relaxation
   double max_flip_dihedral_deg = 30;  // between the two triangles a flip makes
+  bool operator==(const RemeshOptions&) const = default;
 };
 
 struct RemeshResult {

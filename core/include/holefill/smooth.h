@@ -16,6 +16,7 @@ struct SmoothOptions {
   int iterations = 10;                           // umbrella only
   double step = 0.5;                             // umbrella lambda; the paper gives none
   FairOptions fair;                              // fair only
+  bool operator==(const SmoothOptions&) const = default;
 };
 
 void smooth_patch(Mesh& mesh, Patch& patch, const SmoothOptions& options = {});

@@ -40,6 +40,7 @@ struct RestrictedSearch {
   std::size_t above_edges = 800;  // holes with more boundary edges use it; 0: never
   int pocket_edges = 48;
   int nearest_neighbours = 16;
+  bool operator==(const RestrictedSearch&) const = default;
 };
 
 struct TriangulateOptions {
@@ -59,6 +60,7 @@ struct TriangulateOptions {
   // once cancelled, the search stops and returns nothing (progress->cancelled() tells that from
   // "no triangulation"). Not owned; null: never cancelled.
   const Progress* progress = nullptr;
+  bool operator==(const TriangulateOptions&) const = default;
 };
 
 // The dynamic program stores apexes in 16 bits: holes must have fewer boundary edges than this.
