@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(
   g++ cmake ninja-build pkg-config
-  libopenmesh-dev libeigen3-dev libgmp-dev libnanoflann-dev
+  libopenmesh-dev libeigen3-dev libgmp-dev libnanoflann-dev libtinyobjloader-dev
   libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
   libglfw3-dev libglm-dev libimgui-dev libepoxy-dev libstb-dev
   xvfb xauth libgl1-mesa-dri

@@ -1,24 +1,171 @@
-#include <algorithm>
-#include <charconv>
-#include <cstring>
-#include <set>
-#include <string>
+// OBJ through tinyobjloader (Debian's libtinyobjloader, its double build): its callback API walks
+// the statements and gives the names of materials (usemtl), groups (g) and objects (o) and the
+// files of mtllib. Its numbers are not used: each callback reads its statement's numbers again
+// (ObjStatements serves one statement at a time and knows which one is read):
+// - coordinates, colours, texture coordinates and normals with std::from_chars, because
+//   tinyobjloader's parser is not correctly rounded (60-68 % of 17-digit coordinates come back
+//   1-8 ulp off) and original vertices keep their values bit for bit;
+// - face corners with a strict integer parse, because tinyobjloader's atoi reads letters as 0
+//   and overflows silently; index 0, relative indices before the first element and indices past
+//   the last are refused, naming the line, as are non-finite numbers and short statements.
+// Continued lines and comments are resolved by ObjStatements (tinyobjloader knows neither). The
+// .mtl files are not read: the mesh keeps their paths, and the output refers to them.
+#include <tiny_obj_loader.h>
 
+#include <algorithm>
+#include <istream>
+#include <unordered_map>
+
+#include "obj_statements.h"
 #include "readers.h"
-#include "text_scan.h"
 
 namespace holefill::io {
 namespace fs = std::filesystem;
 namespace {
 
-// A backslash at the end of a line continues it on the next, unless it ends a comment.
-bool continues(std::string_view line) {
-  return !line.empty() && line.back() == '\\' && line.find('#') == std::string_view::npos;
+std::string_view trimmed(std::string_view text) {
+  skip_blanks(text);
+  while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
+  return text;
+}
+
+// The number (1-based) of `name` in `names`, added at the end when new.
+int number_of(std::string_view name, std::vector<std::string>& names,
+              std::unordered_map<std::string, int>& numbers) {
+  const auto [found, added] = numbers.try_emplace(std::string(name), 0);
+  if (added) {
+    names.emplace_back(name);
+    found->second = static_cast<int>(names.size());
+  }
+  return found->second;
+}
+
+// Sets values[index] (0 beyond the values set so far, which stay empty until one is not 0).
+void set_sparse(std::vector<int>& values, std::size_t index, int value) {
+  if (value == 0 && values.empty()) return;
+  values.resize(index, 0);
+  values.push_back(value);
+}
+
+// Records the files mtllib names (tinyobjloader splits the statement) without reading them.
+class MaterialLibraries : public tinyobj::MaterialReader {
+ public:
+  explicit MaterialLibraries(fs::path folder) : folder_(std::move(folder)) {}
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>*,
+                  std::map<std::string, int>*, std::string*, std::string*) override {
+    if (name.empty()) return false;
+    std::error_code error;
+    fs::path file = fs::weakly_canonical(folder_ / name, error);
+    if (error) file = (folder_ / name).lexically_normal();
+    if (std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
+    return false;  // nothing read: tinyobjloader goes on to the statement's next file
+  }
+  std::vector<fs::path> files;
+
+ private:
+  fs::path folder_;
+};
+
+// One element's kind, for messages: "vertex", "texture coordinate", "normal".
+struct IndexKind {
+  const char* name;
+  const char* plural;
+  const char* syntax_error;  // what a corner is not when its number cannot be read
+};
+constexpr IndexKind kVertexIndex{"vertex", "vertices", "is not a vertex index"};
+constexpr IndexKind kTexcoordIndex{"texture coordinate", "texture coordinates",
+                                   "has no valid texture coordinate index"};
+constexpr IndexKind kNormalIndex{"normal", "normals", "has no valid normal index"};
+
+class ObjReading {
+ public:
+  ObjReading(const ObjStatements& statements, const fs::path& path)
+      : statements_(statements), path_(path) {}
+
+  void read_vertex();
+  void read_texcoord();
+  void read_normal();
+  void read_face();
+  void use_material(std::string_view name) {
+    material_ = number_of(trimmed(name), soup.obj.materials, material_numbers_);
+  }
+  void set_group(std::string_view names) {
+    group_ = number_of(names.empty() ? "default" : names, soup.obj.groups, group_numbers_);
+  }
+  void set_object(std::string_view name) {
+    object_ = number_of(trimmed(name), soup.obj.objects, object_numbers_);
+  }
+  // Checks the indices against what the file defines and moves them into the soup.
+  void finish(LoadReport& report);
+
+  Soup soup;
+
+ private:
+  [[noreturn]] void fail_here(const std::string& reason) const {
+    fail(path_, at_line(statements_.line()) + reason);
+  }
+  // The statement's numbers after its keyword, at most `most`; refuses a missing or bad one
+  // among the first `least`, and non-finite ones.
+  int read_numbers(double* values, int least, int most, const char* what) const;
+  long long read_index(std::string_view text, std::string_view corner, std::size_t defined,
+                       const IndexKind& kind) const;
+  void read_vertex_colour(std::string_view rest);
+  void check_indices(const std::vector<long long>& indices, std::size_t defined,
+                     const IndexKind& kind) const;
+
+  const ObjStatements& statements_;
+  const fs::path& path_;
+  // 0-based indices by corner, checked against the counts at the end (a face may refer ahead);
+  // -1: the corner has no texture coordinate or normal.
+  std::vector<long long> vertex_, texcoord_, normal_;
+  bool any_texcoord_ = false, any_normal_ = false;
+  std::size_t partial_texcoords_ = 0, partial_normals_ = 0;  // faces with some corners only
+  int material_ = 0, group_ = 0, object_ = 0;
+  std::unordered_map<std::string, int> material_numbers_, group_numbers_, object_numbers_;
+};
+
+int ObjReading::read_numbers(double* values, int least, int most, const char* what) const {
+  std::string_view rest = statements_.statement();
+  take_token(rest);  // the keyword
+  int count = 0;
+  for (; count < most; ++count) {
+    const std::string_view token = take_token(rest);
+    if (token.empty() && count >= least) break;
+    if (!parse_double(token, values[count])) {
+      if (count >= least) break;
+      fail_here(std::string(what) + " needs " + std::to_string(least) + " numbers" +
+                (token.empty() ? std::string() : ", got " + quoted(token)));
+    }
+  }
+  for (int i = 0; i < count; ++i) {
+    if (!std::isfinite(values[i])) fail_here(std::string(what) + " has a non-finite value");
+  }
+  return count;
+}
+
+void ObjReading::read_vertex() {
+  double xyz[3];
+  std::string_view rest = statements_.statement();
+  take_token(rest);
+  for (double& value : xyz) {
+    const std::string_view token = take_token(rest);
+    if (!parse_double(token, value)) {
+      fail_here("vertex needs 3 numbers" +
+                (token.empty() ? std::string() : ", got " + quoted(token)));
+    }
+  }
+  if (static_cast<long long>(soup.positions.size()) >= kMaxVertices) {
+    fail_here("more vertices than holefill supports");
+  }
+  const Point p(xyz[0], xyz[1], xyz[2]);
+  require_finite(p, soup.positions.size() + 1, statements_.line(), path_);
+  soup.positions.push_back(p);
+  read_vertex_colour(rest);
 }
 
 // The common "v x y z r g b" extension: colours in [0, 1] as vertex attributes, from the first
 // vertex that has them (vertices without get 0).
-void read_vertex_colour(std::string_view rest, Soup& soup) {
+void ObjReading::read_vertex_colour(std::string_view rest) {
   double rgb[3];
   for (double& channel : rgb) {
     if (!parse_double(take_token(rest), channel)) return;
@@ -33,103 +180,175 @@ void read_vertex_colour(std::string_view rest, Soup& soup) {
   }
 }
 
+void ObjReading::read_texcoord() {
+  std::array<double, 3> uvw{0.0, 0.0, 0.0};
+  const int count = read_numbers(uvw.data(), 1, 3, "texture coordinate");
+  soup.obj.texcoord_size =
+      soup.obj.texcoords.empty() ? count : std::max(soup.obj.texcoord_size, count);
+  soup.obj.texcoords.push_back(uvw);
+}
+
+void ObjReading::read_normal() {
+  double xyz[3];
+  read_numbers(xyz, 3, 3, "normal");
+  soup.obj.normals.emplace_back(xyz[0], xyz[1], xyz[2]);
+}
+
+long long ObjReading::read_index(std::string_view text, std::string_view corner,
+                                 std::size_t defined, const IndexKind& kind) const {
+  long long index = 0;
+  if (!parse_integer(text, index)) {
+    fail_here("face corner " + quoted(corner) + " " + kind.syntax_error);
+  }
+  if (index == 0) fail_here(std::string(kind.name) + " index 0 (OBJ counts from 1)");
+  if (index > 0) return index - 1;
+  // Relative: -1 is the last element defined so far.
+  if (index < -static_cast<long long>(defined)) {
+    fail_here(std::string("relative ") + kind.name + " index " + std::to_string(index) +
+              " reaches before the first " + kind.name);
+  }
+  return index + static_cast<long long>(defined);
+}
+
+void ObjReading::read_face() {
+  std::string_view rest = statements_.statement();
+  take_token(rest);
+  const std::size_t first = vertex_.size();
+  std::size_t texcoords = 0, normals = 0;
+  for (std::string_view corner = take_token(rest); !corner.empty(); corner = take_token(rest)) {
+    // "v", "v/vt", "v//vn" or "v/vt/vn".
+    const std::size_t slash = corner.find('/');
+    vertex_.push_back(
+        read_index(corner.substr(0, slash), corner, soup.positions.size(), kVertexIndex));
+    const std::string_view after =
+        slash == std::string_view::npos ? std::string_view() : corner.substr(slash + 1);
+    const std::size_t second = after.find('/');
+    const std::string_view vt = after.substr(0, second);
+    const std::string_view vn =
+        second == std::string_view::npos ? std::string_view() : after.substr(second + 1);
+    texcoord_.push_back(
+        vt.empty() ? -1 : read_index(vt, corner, soup.obj.texcoords.size(), kTexcoordIndex));
+    normal_.push_back(vn.empty() ? -1
+                                 : read_index(vn, corner, soup.obj.normals.size(), kNormalIndex));
+    texcoords += vt.empty() ? 0 : 1;
+    normals += vn.empty() ? 0 : 1;
+  }
+  const std::size_t corners = vertex_.size() - first;
+  // A face gives every corner a texture coordinate (a normal), or none.
+  auto all_or_none = [&](std::vector<long long>& values, std::size_t given, std::size_t& partial) {
+    if (given == 0 || given == corners) return given != 0;
+    std::fill(values.begin() + static_cast<std::ptrdiff_t>(first), values.end(), -1);
+    ++partial;
+    return false;
+  };
+  any_texcoord_ = all_or_none(texcoord_, texcoords, partial_texcoords_) || any_texcoord_;
+  any_normal_ = all_or_none(normal_, normals, partial_normals_) || any_normal_;
+  const std::size_t face = soup.face_count();
+  soup.end_face(vertex_.size(), statements_.line());
+  set_sparse(soup.face_material, face, material_);
+  set_sparse(soup.face_group, face, group_);
+  set_sparse(soup.face_object, face, object_);
+}
+
+void ObjReading::check_indices(const std::vector<long long>& indices, std::size_t defined,
+                               const IndexKind& kind) const {
+  for (std::size_t f = 0, c = 0; f < soup.face_count(); ++f) {
+    for (; c < soup.face_end[f]; ++c) {
+      if (indices[c] < static_cast<long long>(defined)) continue;
+      fail(path_, at_line(soup.face_line[f]) + "face refers to " + kind.name + " " +
+                      std::to_string(indices[c] + 1) + ", but the file has " +
+                      std::to_string(defined) + " " + kind.plural);
+    }
+  }
+}
+
+void ObjReading::finish(LoadReport& report) {
+  const std::size_t faces = soup.face_count();
+  for (auto* values : {&soup.face_material, &soup.face_group, &soup.face_object}) {
+    if (!values->empty()) values->resize(faces, 0);
+  }
+  check_indices(vertex_, soup.positions.size(), kVertexIndex);
+  soup.corners.assign(vertex_.size(), 0);
+  std::transform(vertex_.begin(), vertex_.end(), soup.corners.begin(),
+                 [](long long index) { return static_cast<int>(index); });
+  // Texture coordinate and normal numbers count from 1, 0 for none.
+  auto keep = [&](const std::vector<long long>& indices, std::size_t defined, const IndexKind& kind,
+                  std::vector<int>& numbers) {
+    check_indices(indices, defined, kind);
+    numbers.assign(indices.size(), 0);
+    std::transform(indices.begin(), indices.end(), numbers.begin(),
+                   [](long long index) { return static_cast<int>(index + 1); });
+  };
+  if (any_texcoord_)
+    keep(texcoord_, soup.obj.texcoords.size(), kTexcoordIndex, soup.corner_texcoord);
+  if (any_normal_) keep(normal_, soup.obj.normals.size(), kNormalIndex, soup.corner_normal);
+  soup.obj.file_texcoords = soup.obj.texcoords.size();
+  soup.obj.file_normals = soup.obj.normals.size();
+  for (auto& column : soup.vertex_values) column.resize(soup.positions.size(), 0.0);
+  auto warn = [&](std::size_t count, const char* what) {
+    if (count)
+      report.warnings.push_back(std::to_string(count) + " faces gave " + what +
+                                " to some of their corners only; those were dropped");
+  };
+  warn(partial_texcoords_, "texture coordinates");
+  warn(partial_normals_, "normals");
+  if (any_texcoord_ || any_normal_ || !soup.obj.materials.empty() || !soup.obj.groups.empty() ||
+      !soup.obj.objects.empty() || !soup.obj.material_libraries.empty()) {
+    report.warnings.push_back(
+        "the file's texture coordinates, normals, materials and groups were not kept");
+  }
+}
+
 }  // namespace
 
 Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) {
   require_text(text, path, "OBJ");
-  Soup soup;
-  std::vector<long long> corners;  // 0-based, checked against the vertex count at the end
-  Lines lines(text);
-  std::string_view line;
-  std::string joined;
-  std::set<std::string> not_kept;
-  while (lines.next(line)) {
-    const std::size_t line_number = lines.number();
-    if (continues(line)) {
-      joined.assign(line.substr(0, line.size() - 1));
-      std::string_view more;
-      bool continued = true;
-      while (continued && lines.next(more)) {
-        continued = continues(more);
-        joined += ' ';
-        joined += more.substr(0, more.size() - (continued ? 1 : 0));
-      }
-      line = joined;
+  ObjStatements statements(text);
+  ObjReading reading(statements, path);
+  tinyobj::callback_t callbacks;
+  callbacks.vertex_cb = [](void* r, tinyobj::real_t, tinyobj::real_t, tinyobj::real_t,
+                           tinyobj::real_t) { static_cast<ObjReading*>(r)->read_vertex(); };
+  callbacks.texcoord_cb = [](void* r, tinyobj::real_t, tinyobj::real_t, tinyobj::real_t) {
+    static_cast<ObjReading*>(r)->read_texcoord();
+  };
+  callbacks.normal_cb = [](void* r, tinyobj::real_t, tinyobj::real_t, tinyobj::real_t) {
+    static_cast<ObjReading*>(r)->read_normal();
+  };
+  callbacks.index_cb = [](void* r, tinyobj::index_t*, int) {
+    static_cast<ObjReading*>(r)->read_face();
+  };
+  callbacks.usemtl_cb = [](void* r, const char* name, int) {
+    static_cast<ObjReading*>(r)->use_material(name);
+  };
+  callbacks.group_cb = [](void* r, const char** names, int count) {
+    std::string joined;
+    for (int i = 0; i < count; ++i) {
+      if (i) joined += ' ';
+      joined += names[i];
     }
-    std::string_view rest = line.substr(0, line.find('#'));  // comments run to the line's end
-    const std::string_view keyword = take_token(rest);
-    if (keyword.empty()) continue;
-    if (keyword == "v") {
-      Point p;
-      for (int axis = 0; axis < 3; ++axis) {
-        const std::string_view token = take_token(rest);
-        if (!parse_double(token, p[axis])) {
-          fail(path, at_line(line_number) + "vertex needs 3 numbers" +
-                         (token.empty() ? std::string() : ", got " + quoted(token)));
-        }
-      }
-      if (static_cast<long long>(soup.positions.size()) >= kMaxVertices) {
-        fail(path, at_line(line_number) + "more vertices than holefill supports");
-      }
-      require_finite(p, soup.positions.size() + 1, line_number, path);
-      soup.positions.push_back(p);
-      read_vertex_colour(rest, soup);
-    } else if (keyword == "f" || keyword == "fo") {
-      const std::size_t first = corners.size();
-      for (std::string_view corner = take_token(rest); !corner.empty(); corner = take_token(rest)) {
-        // "v", "v/vt", "v//vn" or "v/vt/vn": only the position index matters here.
-        const std::string_view index_text = corner.substr(0, corner.find('/'));
-        long long index = 0;
-        if (!parse_integer(index_text, index)) {
-          fail(path,
-               at_line(line_number) + "face corner " + quoted(corner) + " is not a vertex index");
-        }
-        if (index == 0) fail(path, at_line(line_number) + "vertex index 0 (OBJ counts from 1)");
-        const long long defined = static_cast<long long>(soup.positions.size());
-        if (index < 0) {
-          // Relative: -1 is the last vertex defined so far.
-          if (index < -defined) {
-            fail(path, at_line(line_number) + "relative vertex index " + std::to_string(index) +
-                           " reaches before the first vertex");
-          }
-          index += defined;
-        } else {
-          index -= 1;
-        }
-        corners.push_back(index);
-      }
-      if (corners.size() == first) {
-        ++report.degenerate_faces_dropped;
-        continue;
-      }
-      soup.end_face(corners.size(), line_number);
-    } else if (keyword == "vt" || keyword == "vn" || keyword == "usemtl" || keyword == "mtllib") {
-      not_kept.insert(std::string(keyword));
-    } else if (keyword == "l" || keyword == "p" || keyword == "curv" || keyword == "curv2" ||
-               keyword == "surf") {
-      ++report.elements_ignored;
-    }
-  }
-  if (!not_kept.empty()) {
+    static_cast<ObjReading*>(r)->set_group(joined);
+  };
+  callbacks.object_cb = [](void* r, const char* name) {
+    static_cast<ObjReading*>(r)->set_object(name);
+  };
+  std::error_code error;
+  fs::path folder = fs::absolute(path, error).parent_path();
+  MaterialLibraries libraries(folder);
+  std::istream stream(&statements);
+  tinyobj::LoadObjWithCallback(stream, callbacks, &reading, &libraries);
+  reading.soup.obj.material_libraries = libraries.files;
+  report.elements_ignored += statements.elements_ignored();
+  report.degenerate_faces_dropped += statements.empty_faces();
+  if (!statements.not_kept().empty()) {
     std::string kinds;
-    for (const auto& kind : not_kept) kinds += (kinds.empty() ? "" : ", ") + kind;
-    report.warnings.push_back("the file's " + kinds +
-                              " lines (texture coordinates, normals, materials) were not kept");
-  }
-  const long long vertex_count = static_cast<long long>(soup.positions.size());
-  soup.corners.reserve(corners.size());
-  for (std::size_t f = 0, c = 0; f < soup.face_count(); ++f) {
-    for (; c < soup.face_end[f]; ++c) {
-      if (corners[c] >= vertex_count) {
-        fail(path, at_line(soup.face_line[f]) + "face refers to vertex " +
-                       std::to_string(corners[c] + 1) + ", but the file has " +
-                       std::to_string(vertex_count) + " vertices");
-      }
-      soup.corners.push_back(static_cast<int>(corners[c]));
+    for (const auto& [keyword, count] : statements.not_kept()) {
+      kinds +=
+          (kinds.empty() ? "" : ", ") + io::quoted(keyword) + " (" + std::to_string(count) + ")";
     }
+    report.warnings.push_back("statements holefill does not keep were dropped: " + kinds);
   }
-  for (auto& column : soup.vertex_values) column.resize(soup.positions.size(), 0.0);
-  return soup;
+  reading.finish(report);
+  return std::move(reading.soup);
 }
 
 }  // namespace holefill::io

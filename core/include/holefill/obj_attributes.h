@@ -1,0 +1,39 @@
+// What an OBJ file carries beyond positions and vertex colours: a texture coordinate (vt) and a
+// normal (vn) per face corner, each face's material (usemtl) and the libraries that define the
+// materials (mtllib), each face's group (g) and object (o). Kept on the mesh as OpenMesh
+// properties so that every stage carries them, and written back by save_mesh as OBJ:
+//   "holefill:obj"           mesh property, ObjTables: the values and names the numbers below
+//                            count into
+//   "holefill:obj:texcoord"  HPropHandleT<int>, per halfedge h with a face: the corner of face(h)
+//                            at to_vertex(h) uses texcoords[n - 1]; 0: no texture coordinate
+//   "holefill:obj:normal"    HPropHandleT<int>, likewise into normals
+//   "holefill:obj:material"  FPropHandleT<int>, materials[n - 1]; 0: none
+//   "holefill:obj:group"     FPropHandleT<int>, groups[n - 1]; 0: none
+//   "holefill:obj:object"    FPropHandleT<int>, objects[n - 1]; 0: none
+// Numbers count from 1, as in the file, so that the 0 OpenMesh gives an element added later
+// means "none". Original elements keep their numbers, so their values survive bit for bit.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "holefill/mesh.h"
+
+namespace holefill {
+
+struct ObjTables {
+  std::vector<std::array<double, 3>> texcoords;  // u v w: the file's vt lines, then patches'
+  int texcoord_size = 2;                         // numbers each vt line has (1 to 3) when written
+  std::vector<Point> normals;                    // the file's vn lines, then patches'
+  std::size_t file_texcoords = 0;  // the first ones came from the file: written even when unused
+  std::size_t file_normals = 0;
+  std::vector<std::string> materials;  // usemtl names
+  std::vector<std::string> groups;     // g statements' names (several joined by a space)
+  std::vector<std::string> objects;    // o names
+  // The material libraries (mtllib), as absolute paths: written relative to the output's folder.
+  std::vector<std::filesystem::path> material_libraries;
+};
+
+}  // namespace holefill
