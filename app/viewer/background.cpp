@@ -31,7 +31,8 @@ bool start_fill(Worker& worker, Session& session, const std::optional<FillReques
 
 bool start_change(Worker& worker, Session& session, const std::optional<LogChange>& change) {
   if (!change) return false;
-  const char* labels[] = {"Undoing", "Redoing", "Resetting the hole", "Applying the options"};
+  const char* labels[] = {"Undoing", "Redoing", "Resetting the hole", "Applying the options",
+                          "Keeping the result"};
   return start_compute(worker, session, labels[static_cast<int>(change->kind)], *change);
 }
 

@@ -33,7 +33,9 @@ const char* usage() {
          "Opens MESH (OBJ, OFF, PLY, STL; default: the bundled bunny) in a window.\n"
          "\n"
          "Scripted mode (for automation and documentation):\n"
-         "  --select-hole K                 select hole K (0 is the largest)\n"
+         "  --select-hole K                 select hole K (0 is the largest) with its islands\n"
+         "  --add-hole K                    add loop K to the selection, as shift-click does\n"
+         "                                  (repeatable; two loops: --run bridges them)\n"
          "  --run triangulate,refine,smooth run these stages on the selected hole\n"
          "  --fill-all                      fill every hole\n"
          "  --remesh                        refine with the remeshing pass (toward valence 6)\n"
@@ -63,6 +65,8 @@ CommandLine parse_command_line(const std::vector<std::string>& arguments) {
       command.help = true;
     } else if (arg == "--select-hole") {
       command.select_hole = parse_int(value(), arg);
+    } else if (arg == "--add-hole") {
+      command.add_holes.push_back(parse_int(value(), arg));
     } else if (arg == "--run") {
       std::stringstream stages(value());
       for (std::string name; std::getline(stages, name, ',');)
@@ -116,6 +120,9 @@ CommandLine parse_command_line(const std::vector<std::string>& arguments) {
   }
   if (command.report_frame_time && command.screenshot.empty()) {
     throw std::invalid_argument("--frames needs --screenshot");
+  }
+  if (!command.add_holes.empty() && !command.select_hole) {
+    throw std::invalid_argument("--add-hole needs --select-hole");
   }
   if (command.compare && !command.select_hole) {
     throw std::invalid_argument("--compare needs --select-hole");

@@ -14,7 +14,8 @@ namespace holefill::viewer {
 struct CommandLine {
   std::filesystem::path mesh;  // empty: the bundled bunny
   std::optional<int> select_hole;
-  std::vector<Stage> run;  // stages to run on the selected hole, in order
+  std::vector<int> add_holes;  // loops added to the selection (shift-click), in order
+  std::vector<Stage> run;      // stages to run on the selected hole, in order
   bool fill_all = false;
   bool remesh = false;  // remesh toward valence 6 after refinement
   bool fair = false;    // fairing instead of umbrella smoothing

@@ -7,6 +7,7 @@ ComparisonSide fill_side(const Mesh& mesh, const Hole& hole, const FillOptions& 
                          std::string label) {
   ComparisonSide side;
   side.label = std::move(label);
+  side.options = options;
   side.mesh = mesh;
   side.fill = fill_hole(side.mesh, hole, options);
   return side;

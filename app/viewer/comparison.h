@@ -12,7 +12,8 @@ namespace holefill::viewer {
 enum class CompareMode { Weights, Smoothing };
 
 struct ComparisonSide {
-  std::string label;  // what differs on this side: "liepa", "maxmin", "umbrella", "fair"
+  std::string label;    // what differs on this side: "liepa", "maxmin", "umbrella", "fair"
+  FillOptions options;  // what made it (options.last_stage: how far)
   Mesh mesh;
   HoleFill fill;
 };

@@ -70,4 +70,8 @@ void GlProgram::set(const char* name, const glm::vec3* values, int count) const 
   glUniform3fv(glGetUniformLocation(id_, name), count, glm::value_ptr(values[0]));
 }
 
+void GlProgram::set(const char* name, const int* values, int count) const {
+  glUniform1iv(glGetUniformLocation(id_, name), count, values);
+}
+
 }  // namespace holefill::viewer

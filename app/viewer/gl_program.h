@@ -23,6 +23,7 @@ class GlProgram {
   void set(const char* name, const glm::vec4& value) const;
   void set(const char* name, const glm::mat4& value) const;
   void set(const char* name, const glm::vec3* values, int count) const;
+  void set(const char* name, const int* values, int count) const;
 
  private:
   GLuint id_ = 0;

@@ -38,7 +38,9 @@ double polygon_area(const std::vector<Point>& points) {
 std::vector<HoleRow> hole_rows(const Session& session) {
   std::vector<HoleRow> rows;
   for (const auto& hole : session.holes()) {
-    const HoleFill& fill = session.fill(hole.id);
+    // A loop another patch closed takes that patch's state.
+    const int closer = session.closed_by(hole.id);
+    const HoleFill& fill = session.fill(closer >= 0 ? closer : hole.id);
     std::vector<Point> points;
     for (const auto v : hole.vertices) points.push_back(session.mesh().point(v));
     HoleRow row;
@@ -51,8 +53,16 @@ std::vector<HoleRow> hole_rows(const Session& session) {
                  : fill.stage() == Stage::Original ? HoleStatus::Open
                                                    : HoleStatus::Partial;
     row.stage = fill.failed() ? "failed" : to_string(fill.stage());
+    const int outer = session.islands().outer[hole.id];
+    if (closer >= 0) {
+      row.stage = "closed by " + std::to_string(closer);
+    } else if (outer >= 0 && fill.stage() == Stage::Original && !fill.failed()) {
+      row.stage = "island of " + std::to_string(outer);
+    } else if (!fill.joined_holes.empty() && fill.stage() != Stage::Original) {
+      row.stage += " +" + std::to_string(fill.joined_holes.size());
+    }
     row.intersecting = fill.self_intersections > 0;
-    row.failure = fill.failure;
+    row.failure = fill.failed() ? fill.failure : session.islands().problem[hole.id];
     rows.push_back(std::move(row));
   }
   return rows;

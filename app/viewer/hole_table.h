@@ -18,9 +18,11 @@ struct HoleRow {
   double perimeter = 0.0;
   double area = 0.0;  // of the boundary polygon (length of its vector area): an estimate
   HoleStatus status = HoleStatus::Open;
-  const char* stage = "";     // the last stage run, or "failed"
+  // The last stage run, "failed", "island of N" (filled with hole N), "closed by N" (N's patch
+  // closed it), with "+k" when the patch also closed k other loops.
+  std::string stage;
   bool intersecting = false;  // the patch intersects the mesh
-  std::string failure;        // why it failed, for the tooltip
+  std::string failure;        // why it failed or cannot be filled with its islands, for the tooltip
 };
 
 enum class HoleColumn { Id, Edges, Perimeter, Area, Status };

@@ -87,12 +87,17 @@ void Interaction::handle(const InputEvent& event, const SceneArea& scene, bool u
     case InputEvent::Kind::ButtonDown:
       if (ui_wants_mouse || !scene.contains(event.cursor)) return;
       press_ = last_ = event.cursor;
-      drag_ = event.button == MouseButton::Left && !event.shift ? Drag::Pending : Drag::Pan;
+      drag_ = event.button != MouseButton::Left ? Drag::Pan
+              : event.shift                     ? Drag::PendingToggle
+                                                : Drag::Pending;
       break;
     case InputEvent::Kind::CursorMove:
       if (drag_ == Drag::Pending && glm::length(event.cursor - press_) > 3.0f) {
         drag_ = Drag::Orbit;
         camera.begin_orbit(press_ - area.origin);
+      }
+      if (drag_ == Drag::PendingToggle && glm::length(event.cursor - press_) > 3.0f) {
+        drag_ = Drag::Pan;
       }
       if (drag_ == Drag::Orbit) camera.orbit_to(local);
       if (drag_ == Drag::Pan) camera.pan(event.cursor - last_);
@@ -105,9 +110,12 @@ void Interaction::handle(const InputEvent& event, const SceneArea& scene, bool u
       }
       break;
     case InputEvent::Kind::ButtonUp:
-      if (drag_ == Drag::Pending && !comparing) {
+      if ((drag_ == Drag::Pending || drag_ == Drag::PendingToggle) && !comparing) {
         if (const auto hole = hole_under_cursor(session, camera, area, event.cursor)) {
-          session.select(*hole);
+          if (drag_ == Drag::Pending)
+            session.select(*hole);
+          else
+            session.toggle(*hole);
         }
       }
       drag_ = Drag::None;

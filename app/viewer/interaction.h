@@ -1,6 +1,7 @@
 // What mouse and keys do in the 3D view: left drag orbits (arcball), right or middle drag (or
-// shift + left) pans, the wheel zooms toward the cursor, a left click picks a hole. Keys follow
-// the shortcut table (shortcuts.h): those about the view and the selection (deselect, frame,
+// shift + left) pans, the wheel zooms toward the cursor, a left click picks a hole and a
+// shift-click adds a loop to the selection or takes it out (islands, a hole to bridge to). Keys
+// follow the shortcut table (shortcuts.h): those about the view and the selection (deselect, frame,
 // reset view) are carried out here; those that change the mesh (undo, redo, reset hole, fills,
 // which run on the worker), those about files, help and screenshots, and dropped files, are
 // handed to the frame loop as requests. No GL: it moves the camera and calls the session.
@@ -56,7 +57,9 @@ class Interaction {
   std::vector<Request> take_requests();
 
  private:
-  enum class Drag { None, Pending, Orbit, Pan };
+  // Pending: a left press that picks on release unless it moves (then orbits); PendingToggle:
+  // the same with shift, which adds or removes the loop (or pans when it moves).
+  enum class Drag { None, Pending, PendingToggle, Orbit, Pan };
   Drag drag_ = Drag::None;
   glm::vec2 press_{0.0f};
   glm::vec2 last_{0.0f};

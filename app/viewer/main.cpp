@@ -60,6 +60,13 @@ bool run_script(const hv::CommandLine& command, hv::Session& session) {
     }
     session.select(*command.select_hole);
   }
+  for (const int hole : command.add_holes) {
+    if (hole < 0 || hole >= static_cast<int>(session.holes().size()) || !session.toggle(hole)) {
+      std::fprintf(stderr, "holefill-viewer: --add-hole %d: not a loop that can be added (%s)\n",
+                   hole, session.notice().text.c_str());
+      return false;
+    }
+  }
   for (const auto stage : command.run) {
     if (!session.step(stage)) {
       std::fprintf(stderr, "holefill-viewer: cannot run %s on hole %d%s%s\n",
@@ -131,6 +138,12 @@ void carry_out(const hv::Request& request, hv::FileActions& files, hv::Session& 
     case hv::Command::FillAll:
       hv::start_fill(worker, session,
                      session.fill_all_request(static_cast<std::size_t>(ui.fill_all_max_edges)));
+      break;
+    case hv::Command::Bridge:
+      if (session.bridge_problem().empty())
+        hv::start_fill(worker, session, session.fill_selected_request());
+      else
+        session.tell({session.bridge_problem(), true});
       break;
     case hv::Command::Undo:
       hv::start_change(worker, session, session.undo_request());
@@ -261,6 +274,7 @@ int run(const hv::CommandLine& command, const char* executable) {
     ImGui::EndDisabled();
     hv::draw_progress(worker, keys, area.origin.x, area.origin.x + area.size.x,
                       area.origin.y + area.size.y);
+    hv::draw_comparison_labels(session, area.origin.x, area.origin.x + area.size.x, area.origin.y);
     hv::draw_file_modals(files, builtin_dialog, dialogs.builtin(), keys);
     hv::draw_help(ui.show_help, keys);
     ImGui::Render();
@@ -269,9 +283,16 @@ int run(const hv::CommandLine& command, const char* executable) {
       title = files.window_title();
       window.set_title(title.c_str());
     }
+    // The comparison frames its hole in each half as it starts or its hole changes.
+    const int compared = session.compare() ? session.selected() : -1;
+    if (compared >= 0 && compared != ui.compared_hole) ui.frame_selected = true;
+    ui.compared_hole = compared;
     if (ui.fit_view) hv::fit_mesh(camera, session);
     if (ui.reset_view) camera.reset();
-    if (ui.frame_selected) hv::frame_hole(camera, session, session.selected());
+    if (ui.frame_selected) {
+      camera.set_viewport(compared >= 0 ? area.size * glm::vec2(0.5f, 1.0f) : area.size);
+      hv::frame_hole(camera, session, session.selected());
+    }
     ui.fit_view = ui.reset_view = ui.frame_selected = false;
 
     const glm::ivec2 framebuffer = window.framebuffer_size();

@@ -13,11 +13,13 @@ inline constexpr Rgb kBackground{33, 36, 43};
 inline constexpr Rgb kSurface{200, 190, 174};      // original faces
 inline constexpr Rgb kTriangulated{77, 140, 242};  // faces the triangulation added
 inline constexpr Rgb kRefined{89, 204, 115};       // faces the refinement added
+inline constexpr Rgb kSmoothed{165, 135, 235};     // faces of a smoothed patch
 inline constexpr Rgb kWireframe{40, 40, 48};
 inline constexpr Rgb kPatchVertex{230, 40, 25};
 inline constexpr Rgb kBoundary{255, 140, 0};  // an unfilled hole's boundary loop
 inline constexpr Rgb kBorder{0, 170, 150};    // a loop that looks like an open surface's border
 inline constexpr Rgb kSelectedBoundary{255, 0, 255};
+inline constexpr Rgb kJoinedBoundary{255, 150, 255};  // filled with the selected hole: islands
 inline constexpr Rgb kHoveredBoundary{0, 255, 255};
 inline constexpr Rgb kDivider{255, 216, 0};  // between the comparison's two views
 

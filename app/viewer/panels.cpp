@@ -11,15 +11,15 @@
 #include <vector>
 
 #include "background.h"
-#include "hole_table.h"
+#include "hole_list_panel.h"
 #include "palette.h"
 #include "valence_bins.h"
+#include "widgets.h"
 
 namespace holefill::viewer {
 namespace {
 
 constexpr float kSqrt2 = 1.41421356f;
-const ImVec4 kErrorColor{1.0f, 0.45f, 0.4f, 1.0f};
 constexpr double kNoticeSeconds = 12.0;
 
 // A bar per valence bin (valence_bins: the same bins for every chart) with its label under it
@@ -69,27 +69,35 @@ void histogram(const char* id, const std::map<int, std::size_t>& valences, float
                 tallest);
 }
 
-void patch_statistics(const HoleFill& fill) {
+// The selected hole's patch: its stage on the heading line (the stage times on hover), then its
+// measures and the valences of its new vertices.
+void patch_statistics(int hole_id, const HoleFill& fill, bool log_valences) {
   if (fill.failed()) {
-    ImGui::TextColored(kErrorColor, "Failed: %s", fill.failure.c_str());
+    ImGui::Text("Hole %d:", hole_id);
+    ImGui::SameLine();
+    ImGui::TextColored(kErrorColor, "failed: %s", fill.failure.c_str());
     return;
   }
   if (fill.stage() == Stage::Original) {
-    ImGui::TextDisabled("Not filled yet.");
+    ImGui::Text("Hole %d:", hole_id);
+    ImGui::SameLine();
+    ImGui::TextDisabled("not filled yet");
     return;
   }
   const PatchStats& s = fill.stats;
-  ImGui::Text("Stage: %s", to_string(fill.stage()));
+  ImGui::Text("Hole %d patch: %s", hole_id, to_string(fill.stage()));
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("Times: triangulation %.1f ms, refinement %.1f ms, smoothing %.1f ms",
+                      1e3 * fill.times.triangulate_seconds, 1e3 * fill.times.refine_seconds,
+                      1e3 * fill.times.smooth_seconds);
+  }
   ImGui::Text("New vertices %zu   new faces %zu", s.new_vertices, s.new_faces);
   ImGui::Text("Min angle %.2f deg (mean %.2f)", s.min_angle_deg, s.mean_min_angle_deg);
   ImGui::Text("Max dihedral %.2f deg   area %.4g units^2", s.max_dihedral_deg, s.area);
-  ImGui::Text("Times: tri %.1f  ref %.1f  smo %.1f ms", 1e3 * fill.times.triangulate_seconds,
-              1e3 * fill.times.refine_seconds, 1e3 * fill.times.smooth_seconds);
   if (!fill.smoothing_note.empty()) ImGui::TextWrapped("%s", fill.smoothing_note.c_str());
-}
-
-void tooltip(const char* text) {
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
+  if (s.new_vertices == 0) return;
+  ImGui::TextUnformatted("Valences of the patch's new vertices");
+  histogram("##patch_valences", s.valence_histogram, 30.0f, log_valences);
 }
 
 void file_section(Session& session, FileActions& files, UiState& ui) {
@@ -123,90 +131,6 @@ void file_section(Session& session, FileActions& files, UiState& ui) {
     ImGui::TextWrapped("%s", notice.text.c_str());
     if (notice.error) ImGui::PopStyleColor();
   }
-}
-
-void hole_filters(HoleView& view) {
-  ImGui::TextDisabled("show");
-  ImGui::SameLine();
-  ImGui::Checkbox("open", &view.only_open);
-  ImGui::SameLine();
-  ImGui::Checkbox("filled", &view.only_filled);
-  ImGui::SameLine();
-  ImGui::Checkbox("failed", &view.only_failed);
-  ImGui::SameLine();
-  ImGui::Checkbox("intersecting", &view.only_intersecting);
-  tooltip("Show only the holes with any of the ticked states (none ticked: all)");
-}
-
-// Reads the table's sort order (a click on a header) into the view.
-void take_sort_order(HoleView& view) {
-  ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs();
-  if (!specs || !specs->SpecsDirty || specs->SpecsCount == 0) return;
-  view.column = static_cast<HoleColumn>(specs->Specs[0].ColumnUserID);
-  view.descending = specs->Specs[0].SortDirection == ImGuiSortDirection_Descending;
-  specs->SpecsDirty = false;
-}
-
-void hole_row(Session& session, const HoleRow& row, bool scroll_here) {
-  ImGui::TableNextRow();
-  ImGui::TableNextColumn();
-  char label[32];
-  std::snprintf(label, sizeof label, "%d%s", row.id, session.is_border(row.id) ? " border" : "");
-  if (ImGui::Selectable(label, session.selected() == row.id, ImGuiSelectableFlags_SpanAllColumns)) {
-    session.select(row.id);
-  }
-  if (scroll_here) ImGui::SetScrollHereY();
-  if (ImGui::IsItemHovered() && !row.failure.empty())
-    ImGui::SetTooltip("Hole %d failed: %s", row.id, row.failure.c_str());
-  ImGui::TableNextColumn();
-  ImGui::Text("%zu", row.edges);
-  ImGui::TableNextColumn();
-  ImGui::Text("%.4g", row.perimeter);
-  ImGui::TableNextColumn();
-  ImGui::Text("%.4g", row.area);
-  ImGui::TableNextColumn();
-  if (row.status == HoleStatus::Failed) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
-  ImGui::Text("%s%s", row.stage, row.intersecting ? " (x)" : "");
-  if (row.status == HoleStatus::Failed) ImGui::PopStyleColor();
-}
-
-void hole_list(Session& session, UiState& ui) {
-  ImGui::Text("%s: %zu holes", session.name().c_str(), session.holes().size());
-  hole_filters(ui.holes);
-  const auto rows = arrange(hole_rows(session), ui.holes);
-  // The list follows a hole picked in the 3D view.
-  const bool follow = session.selected() != ui.listed_selection;
-  ui.listed_selection = session.selected();
-  const float height = 6.0f * ImGui::GetTextLineHeightWithSpacing() + 6.0f;
-  if (ImGui::BeginTable("holes", 5,
-                        ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
-                            ImGuiTableFlags_BordersOuter | ImGuiTableFlags_Sortable,
-                        ImVec2(0.0f, height))) {
-    ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("hole",
-                            ImGuiTableColumnFlags_DefaultSort | ImGuiTableColumnFlags_WidthFixed,
-                            40.0f, static_cast<ImGuiID>(HoleColumn::Id));
-    ImGui::TableSetupColumn(
-        "edges", ImGuiTableColumnFlags_PreferSortDescending | ImGuiTableColumnFlags_WidthFixed,
-        48.0f, static_cast<ImGuiID>(HoleColumn::Edges));
-    ImGui::TableSetupColumn("perimeter", ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
-                            static_cast<ImGuiID>(HoleColumn::Perimeter));
-    ImGui::TableSetupColumn("area", ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
-                            static_cast<ImGuiID>(HoleColumn::Area));
-    ImGui::TableSetupColumn("stage", 0, 0.0f, static_cast<ImGuiID>(HoleColumn::Status));
-    ImGui::TableHeadersRow();
-    take_sort_order(ui.holes);
-    for (const auto& row : rows) hole_row(session, row, follow && row.id == session.selected());
-    ImGui::EndTable();
-  }
-  if (rows.empty()) ImGui::TextDisabled("No hole matches the filters.");
-  ImGui::BeginDisabled(session.selected() < 0);
-  if (ImGui::Button("Frame this hole")) ui.frame_selected = true;
-  ImGui::EndDisabled();
-  ImGui::SameLine();
-  if (ImGui::Button("Fit view")) ui.fit_view = true;
-  ImGui::SameLine();
-  if (ImGui::Button("Reset view")) ui.reset_view = true;
 }
 
 // What a slider did this frame: moved (show the value) and let go (apply it).
@@ -359,24 +283,22 @@ void step_section(Session& session, Worker& worker, UiState& ui) {
 
 void statistics_section(Session& session, UiState& ui) {
   if (session.selected() >= 0) {
-    const HoleFill& fill = session.fill(session.selected());
-    ImGui::Text("Hole %d patch", session.selected());
-    patch_statistics(fill);
-    ImGui::TextUnformatted("Valences of the patch's new vertices");
-    histogram("##patch_valences", fill.stats.valence_histogram, 40.0f, ui.log_valences);
+    patch_statistics(session.selected(), session.fill(session.selected()), ui.log_valences);
   } else {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     ImGui::TextWrapped("Select a hole: click on or inside its outline, or in the list.");
     ImGui::PopStyleColor();
   }
+  // The comparison's own charts take the room while it shows.
+  if (session.compare() && session.selected() >= 0) return;
   ImGui::Text("Valences of the whole mesh (%zu vertices)", session.mesh().n_vertices());
   ImGui::SameLine();
   ImGui::Checkbox("log", &ui.log_valences);
   tooltip("Bar heights on a log scale, so that rare valences of a big mesh stay visible");
-  histogram("##mesh_valences", session.mesh_valences(), 40.0f, ui.log_valences);
+  histogram("##mesh_valences", session.mesh_valences(), 30.0f, ui.log_valences);
 }
 
-void comparison_section(Session& session, const UiState& ui) {
+void comparison_section(Session& session, Worker& worker, const UiState& ui) {
   bool compare = session.compare();
   if (ImGui::Checkbox("Compare", &compare)) session.set_compare(compare);
   ImGui::SameLine();
@@ -412,26 +334,29 @@ void comparison_section(Session& session, const UiState& ui) {
         ImGui::Text("max dihedral %.2f", s.max_dihedral_deg);
         ImGui::Text("area %.4g", s.area);
       }
-      histogram("##valences", s.valence_histogram, 45.0f, ui.log_valences);
+      histogram("##valences", s.valence_histogram, 30.0f, ui.log_valences);
+      const bool right = side == &comparison->right;
+      ImGui::BeginDisabled(worker.busy() || side->fill.failed());
+      if (ImGui::Button("Keep this")) start_change(worker, session, session.keep_request(right));
+      ImGui::EndDisabled();
+      tooltip("Fill the hole with this side's options (they become the current ones)");
       ImGui::PopID();
     }
     ImGui::EndTable();
   }
 }
 
-ImVec4 color(const palette::Rgb& c) {
-  return ImVec4(c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, 1.0f);
-}
-
 void legend() {
   const std::pair<const palette::Rgb*, const char*> entries[] = {
       {&palette::kTriangulated, "triangulated"},
       {&palette::kRefined, "refined"},
-      {&palette::kPatchVertex, "new vertex"},
+      {&palette::kSmoothed, "smoothed"},
       {&palette::kBoundary, "hole"},
       {&palette::kSelectedBoundary, "selected"},
+      {&palette::kJoinedBoundary, "island/bridged"},
+      {&palette::kBorder, "border"},
       {&palette::kHoveredBoundary, "hovered"},
-      {&palette::kBorder, "border"}};
+      {&palette::kPatchVertex, "new vertex"}};
   for (std::size_t i = 0; i < std::size(entries); ++i) {
     if (i % 3) ImGui::SameLine();
     ImGui::TextColored(color(*entries[i].first), "# %-12s", entries[i].second);
@@ -453,6 +378,26 @@ void display_section(UiState& ui) {
 
 }  // namespace
 
+void draw_comparison_labels(Session& session, float left, float right, float top) {
+  const Comparison* comparison = session.comparison();
+  if (!comparison) return;
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const float half = 0.5f * (right - left);
+  for (const ComparisonSide* side : {&comparison->left, &comparison->right}) {
+    const float start = side == &comparison->left ? left : left + half;
+    char text[96];
+    std::snprintf(text, sizeof text, "%s: %s, %zu new vertices", side->label.c_str(),
+                  side->fill.failed() ? "failed" : to_string(side->fill.stage()),
+                  side->fill.stats.new_vertices);
+    const ImVec2 size = ImGui::CalcTextSize(text);
+    const ImVec2 at(start + 0.5f * (half - size.x), top + 8.0f);
+    draw->AddRectFilled(ImVec2(at.x - 6.0f, at.y - 3.0f),
+                        ImVec2(at.x + size.x + 6.0f, at.y + size.y + 3.0f),
+                        IM_COL32(20, 22, 28, 220), 4.0f);
+    draw->AddText(at, ImGui::GetColorU32(ImGuiCol_Text), text);
+  }
+}
+
 void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& ui,
                  float window_height) {
   ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
@@ -461,7 +406,7 @@ void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& 
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   file_section(session, files, ui);
   ImGui::Separator();
-  hole_list(session, ui);
+  draw_hole_list(session, worker, ui);
   ImGui::Separator();
   ImGui::BeginDisabled(worker.busy());
   options_section(session, worker, ui);
@@ -470,7 +415,7 @@ void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& 
   ImGui::Separator();
   statistics_section(session, ui);
   ImGui::Separator();
-  comparison_section(session, ui);
+  comparison_section(session, worker, ui);
   ImGui::Separator();
   display_section(ui);
   ImGui::End();

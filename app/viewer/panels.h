@@ -33,6 +33,7 @@ struct UiState {
   HoleView holes;              // the hole list's order and filters
   int listed_selection = -1;   // the selection the list last showed (it scrolls to a new one)
   bool log_valences = false;   // valence charts on a log scale
+  int compared_hole = -1;      // the hole the comparison showed last frame (framed when new)
   std::string shown_notice;    // the session's message as last drawn, and since when
   double notice_since = 0.0;
 };
@@ -40,5 +41,9 @@ struct UiState {
 // Fills run on `worker`; while it is busy the controls that change the session are disabled.
 void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& ui,
                  float window_height);
+
+// While the comparison shows: each half's name and result at the top of the 3D view (from x =
+// `left` to `right`, below `top`).
+void draw_comparison_labels(Session& session, float left, float right, float top);
 
 }  // namespace holefill::viewer

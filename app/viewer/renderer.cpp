@@ -31,6 +31,7 @@ void upload(Layer& layer, const Mesh& mesh, const Session& session,
   layer.boundary.upload(boundary_segments(mesh, holes));
   layer.borders.upload(boundary_segments(mesh, borders));
   layer.radius = std::max(0.5f * glm::length(arrays.hi - arrays.lo), 1e-6f);
+  layer.patch_edge_length = arrays.patch_edge_length;
 }
 
 }  // namespace
@@ -78,19 +79,21 @@ void Renderer::render(Session& session, const Camera& camera, const PixelRect& s
     half.set_viewport({static_cast<float>(left.width), static_cast<float>(left.height)});
     clear_rect(left, framebuffer_height, palette::kBackground);
     clear_rect(right, framebuffer_height, palette::kBackground);
-    draw_view(left_, half, left, framebuffer_height, display, session.selected(), -1);
-    draw_view(right_, half, right, framebuffer_height, display, session.selected(), -1);
+    const Highlight highlight{session.selected(), &session.joined(), -1};
+    draw_view(left_, half, left, framebuffer_height, display, highlight);
+    draw_view(right_, half, right, framebuffer_height, display, highlight);
   } else {
     Camera whole = camera;
     whole.set_viewport({static_cast<float>(scene.width), static_cast<float>(scene.height)});
-    draw_view(main_, whole, scene, framebuffer_height, display, session.selected(), hovered_hole);
+    draw_view(main_, whole, scene, framebuffer_height, display,
+              {session.selected(), &session.joined(), hovered_hole});
   }
   glViewport(0, 0, framebuffer_width, framebuffer_height);
 }
 
 void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const PixelRect& rect,
-                         int framebuffer_height, const DisplayOptions& display, int selected,
-                         int hovered) {
+                         int framebuffer_height, const DisplayOptions& display,
+                         const Highlight& highlight) {
   glViewport(rect.x, framebuffer_height - rect.y - rect.height, rect.width, rect.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
@@ -109,7 +112,7 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
   surface_program_.set("u_flat", display.flat ? 1 : 0);
   surface_program_.set("u_face_stages", 0);
   const glm::vec3 stage_colors[4] = {rgb(palette::kSurface), rgb(palette::kTriangulated),
-                                     rgb(palette::kRefined), rgb(palette::kRefined)};
+                                     rgb(palette::kRefined), rgb(palette::kSmoothed)};
   surface_program_.set("u_stage_colors", stage_colors, 4);
   layer.surface.draw_surface(0);
   glDisable(GL_POLYGON_OFFSET_FILL);
@@ -127,6 +130,9 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
     glEnable(GL_PROGRAM_POINT_SIZE);
     solid_program_.set("u_round", 1);
     solid_program_.set("u_point_size", 6.0f);
+    // A dot at most a third of the patch's mean edge across.
+    solid_program_.set("u_point_world_size", layer.patch_edge_length / 3.0f);
+    solid_program_.set("u_viewport_height", static_cast<float>(rect.height));
     solid_program_.set("u_depth_bias", bias);
     solid_program_.set("u_color", rgba(palette::kPatchVertex));
     layer.surface.draw_patch_vertices();
@@ -139,10 +145,14 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
   line_program_.set("u_viewport", glm::vec2(rect.width, rect.height));
   line_program_.set("u_width", 5.0f);
   line_program_.set("u_depth_bias", bias);
-  line_program_.set("u_selected", selected);
-  line_program_.set("u_hovered", hovered);
+  line_program_.set("u_selected", highlight.selected);
+  const int joined = std::min<int>(static_cast<int>(highlight.joined->size()), kMaxJoined);
+  line_program_.set("u_joined_count", joined);
+  if (joined > 0) line_program_.set("u_joined", highlight.joined->data(), joined);
+  line_program_.set("u_hovered", highlight.hovered);
   line_program_.set("u_color", rgba(palette::kBoundary));
   line_program_.set("u_selected_color", rgba(palette::kSelectedBoundary));
+  line_program_.set("u_joined_color", rgba(palette::kJoinedBoundary));
   line_program_.set("u_hovered_color", rgba(palette::kHoveredBoundary));
   layer.boundary.draw();
   line_program_.set("u_color", rgba(palette::kBorder));

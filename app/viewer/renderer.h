@@ -43,11 +43,20 @@ class Renderer {
     BoundaryBuffers borders;  // loops that look like the border of an open surface
     std::uint64_t version = ~std::uint64_t{0};
     float radius = 1.0f;
+    float patch_edge_length = 0.0f;
   };
+
+  // Which loops stand out: the selected hole, the loops filled with it, the hovered one.
+  struct Highlight {
+    int selected = -1;
+    const std::vector<int>* joined = nullptr;
+    int hovered = -1;
+  };
+  static constexpr int kMaxJoined = 16;  // as in thick_line.frag; more are drawn as holes
 
   void sync(Session& session);
   void draw_view(const MeshLayer& layer, const Camera& camera, const PixelRect& rect,
-                 int framebuffer_height, const DisplayOptions& display, int selected, int hovered);
+                 int framebuffer_height, const DisplayOptions& display, const Highlight& highlight);
 
   GlProgram surface_program_;
   GlProgram solid_program_;

@@ -48,9 +48,16 @@ std::uint64_t next_serial() {
   return ++last;
 }
 
-FillStep make_step(int hole_id, FillOptions options) {
+FillStep make_step(int hole_id, std::vector<int> joined, FillOptions options) {
   options.triangulate.progress = nullptr;
-  return {hole_id, std::move(options), next_serial()};
+  return {hole_id, std::move(joined), std::move(options), next_serial()};
+}
+
+FillOptions options_of(const std::vector<FillStep>& log, int hole_id, const FillOptions& fallback) {
+  for (auto it = log.rbegin(); it != log.rend(); ++it) {
+    if (it->hole_id == hole_id) return it->options;
+  }
+  return fallback;
 }
 
 bool same_for_stage(Stage stage, const FillOptions& a, const FillOptions& b) {
@@ -89,7 +96,9 @@ bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& 
   }
   FillOptions options = step.options;
   options.triangulate.progress = progress;
-  const bool ran = advance(state.mesh, holes[step.hole_id], state.fills[step.hole_id], options);
+  std::vector<const Hole*> loops{&holes[step.hole_id]};
+  for (const int id : step.joined) loops.push_back(&holes[id]);
+  const bool ran = advance_joined(state.mesh, loops, state.fills[step.hole_id], options);
   if (followed) checkpoints->steps.push_back(step);
   return ran;
 }

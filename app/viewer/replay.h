@@ -16,11 +16,13 @@
 
 namespace holefill::viewer {
 
-// "Advance hole hole_id by one stage with these options". A step never changes once logged: an
+// "Advance hole hole_id by one stage with these options", together with the loops `joined` (its
+// islands, or the hole it is bridged to: advance_joined). A step never changes once logged: an
 // option change logs new steps. `serial` names the step (unique across sessions), so two logs
 // with the same serials make the same mesh.
 struct FillStep {
   int hole_id = -1;
+  std::vector<int> joined;
   FillOptions options;
   std::uint64_t serial = 0;
 };
@@ -28,8 +30,11 @@ struct FillStep {
 // A new serial for a step (or any other version number): unique across sessions and threads.
 std::uint64_t next_serial();
 
-// A step of `hole_id` with `options` (their Progress dropped) and a new serial.
-FillStep make_step(int hole_id, FillOptions options);
+// A step of `hole_id` (with `joined`) with `options` (their Progress dropped) and a new serial.
+FillStep make_step(int hole_id, std::vector<int> joined, FillOptions options);
+
+// The options hole_id's last step in `log` used; `fallback` when it has none.
+FillOptions options_of(const std::vector<FillStep>& log, int hole_id, const FillOptions& fallback);
 
 // What a log makes of the loaded mesh: the mesh and every hole's fill.
 struct MeshState {

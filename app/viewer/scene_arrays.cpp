@@ -1,5 +1,6 @@
 #include "scene_arrays.h"
 
+#include <cmath>
 #include <limits>
 
 #include "holefill/attributes.h"
@@ -55,14 +56,23 @@ SurfaceArrays surface_arrays(const Mesh& mesh, const std::vector<const HoleFill*
   }
 
   arrays.face_stages.assign(mesh.n_faces(), static_cast<std::uint8_t>(Stage::Original));
+  double edge_lengths = 0.0;
+  std::size_t edges = 0;
   for (const HoleFill* fill : fills) {
+    // Smoothing moves vertices and makes no faces: a smoothed patch is coloured as a whole.
     for (const auto f : fill->patch.faces) {
-      arrays.face_stages[f.idx()] = static_cast<std::uint8_t>(face_stage(mesh, f));
+      const Stage stage = fill->stage() == Stage::Smoothed ? Stage::Smoothed : face_stage(mesh, f);
+      arrays.face_stages[f.idx()] = static_cast<std::uint8_t>(stage);
     }
     for (const auto v : fill->patch.new_vertices) {
       arrays.patch_vertices.push_back(static_cast<std::uint32_t>(v.idx()));
+      for (const auto w : mesh.vv_range(v)) {
+        edge_lengths += glm::length(arrays.positions[w.idx()] - arrays.positions[v.idx()]);
+        ++edges;
+      }
     }
   }
+  if (edges > 0) arrays.patch_edge_length = static_cast<float>(edge_lengths / edges);
 
   arrays.edges.reserve(2 * mesh.n_edges());
   for (const auto e : mesh.edges()) {
@@ -93,10 +103,23 @@ std::vector<glm::vec3> boundary_points(const Mesh& mesh, const Hole& hole) {
 }
 
 glm::vec3 hole_view_direction(const Mesh& mesh, const Hole& hole) {
-  glm::vec3 sum(0.0f);
+  glm::vec3 sum(0.0f), twice_area(0.0f);
+  std::size_t faces = 0;
   for (const auto h : hole.halfedges) {
     const FaceHandle outside = mesh.opposite_face_handle(h);
-    if (outside.is_valid()) sum += to_glm(mesh.calc_face_normal(outside));
+    if (outside.is_valid()) {
+      sum += to_glm(mesh.calc_face_normal(outside));
+      ++faces;
+    }
+    twice_area += glm::cross(to_glm(mesh.point(mesh.from_vertex_handle(h))),
+                             to_glm(mesh.point(mesh.to_vertex_handle(h))));
+  }
+  // Around a cut through a tube the normals point every way and cancel: look from the side,
+  // across the loop's axis, where the gap shows.
+  if (glm::length(sum) < 0.25f * static_cast<float>(faces) && glm::length(twice_area) > 0.0f) {
+    const glm::vec3 axis = glm::normalize(twice_area);
+    const glm::vec3 other = std::abs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    return glm::normalize(glm::cross(axis, other));
   }
   const float length = glm::length(sum);
   return length > 1e-6f ? sum / length : glm::vec3(0.0f, 0.0f, 1.0f);

@@ -19,11 +19,13 @@ struct SurfaceArrays {
   std::vector<std::uint8_t> face_stages;      // Stage per face (Original outside patches)
   std::vector<std::uint32_t> edges;           // 2 per edge, for the wireframe
   std::vector<std::uint32_t> patch_vertices;  // vertices the patches added
+  float patch_edge_length = 0.0f;             // mean length of their edges (0: none), for dot sizes
   glm::vec3 lo{0.0f};
   glm::vec3 hi{0.0f};
 };
 
-// `fills` are the patches on this mesh (their faces get stage colours, their vertices dots).
+// `fills` are the patches on this mesh (their faces get stage colours: the stage that made each
+// face, Smoothed for all of a smoothed patch's; their vertices dots).
 SurfaceArrays surface_arrays(const Mesh& mesh, const std::vector<const HoleFill*>& fills);
 
 struct BoundarySegment {

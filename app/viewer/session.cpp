@@ -11,14 +11,6 @@
 namespace holefill::viewer {
 namespace {
 
-// The options hole_id's last step used; `fallback` when it has none.
-FillOptions options_of(const std::vector<FillStep>& log, int hole_id, const FillOptions& fallback) {
-  for (auto it = log.rbegin(); it != log.rend(); ++it) {
-    if (it->hole_id == hole_id) return it->options;
-  }
-  return fallback;
-}
-
 std::vector<FillStep> without_hole(std::vector<FillStep> log, int hole_id) {
   std::erase_if(log, [hole_id](const FillStep& step) { return step.hole_id == hole_id; });
   return log;
@@ -51,9 +43,12 @@ void Session::load(Mesh mesh, std::string name) {
   name_ = std::move(name);
   loaded_ = std::move(mesh);
   holes_ = find_holes(loaded_);
+  islands_ = find_islands(loaded_, holes_, options_.islands);
   borders_.clear();
-  for (const auto& loop : classify_loops(loaded_, holes_, mesh_pieces(loaded_))) {
-    borders_.push_back(loop.kind == LoopKind::Border);
+  const auto loops = classify_loops(loaded_, holes_, mesh_pieces(loaded_));
+  for (const auto& hole : holes_) {
+    // An island's loop bounds a piece of its own, but it is filled with its hole.
+    borders_.push_back(loops[hole.id].kind == LoopKind::Border && islands_.outer[hole.id] < 0);
   }
   log_.clear();
   undo_.clear();
@@ -75,20 +70,10 @@ bool Session::save(const std::filesystem::path& path) {
   }
 }
 
-void Session::select(int hole_id) {
-  if (hole_id < -1 || hole_id >= static_cast<int>(holes_.size())) hole_id = -1;
-  if (hole_id == selected_) return;
-  selected_ = hole_id;
-  last_change_was_options_ = false;
-  comparison_stale_ = true;
-  // A stepped hole shows the options it was filled with.
-  options_ = options_of(log_, hole_id, options_);
-}
-
 void Session::set_options(const FillOptions& options) {
   if (run(options_request(options))) return;
   options_ = options;
-  comparison_stale_ = true;
+  selection_changed();  // the bridge's gap limit is an option
 }
 
 std::optional<Stage> Session::next_stage() const {
@@ -118,20 +103,21 @@ bool Session::run(const std::optional<LogChange>& change) {
 
 std::optional<FillRequest> Session::step_request(Stage stage) const {
   if (!can_step(stage)) return std::nullopt;
-  return FillRequest{{selected_}, true, false, options_};
+  return FillRequest{{selected_}, true, false, options_, {{selected_, joined_}}};
 }
 
 std::optional<FillRequest> Session::fill_selected_request() const {
   if (!next_stage()) return std::nullopt;
-  return FillRequest{{selected_}, false, false, options_};
+  return FillRequest{{selected_}, false, false, options_, {{selected_, joined_}}};
 }
 
 namespace {
 
 bool unfinished(const HoleFill& fill) { return !fill.failed() && fill.stage() != Stage::Smoothed; }
 
-// "Filled 406 of 416 holes; 10 refused; 2 intersect the mesh."
-Notice summary(const std::vector<int>& hole_ids, const std::vector<HoleFill>& fills) {
+// "Filled 406 of 416 holes; 10 refused; 2 intersect the mesh; 1 left open."
+Notice summary(const FillRequest& request, const std::vector<HoleFill>& fills) {
+  const std::vector<int>& hole_ids = request.hole_ids;
   std::size_t filled = 0, refused = 0, intersecting = 0;
   for (const int id : hole_ids) {
     filled += fills[id].stage() == Stage::Smoothed;
@@ -142,16 +128,34 @@ Notice summary(const std::vector<int>& hole_ids, const std::vector<HoleFill>& fi
       "Filled " + std::to_string(filled) + " of " + std::to_string(hole_ids.size()) + " holes";
   if (refused) text += "; " + std::to_string(refused) + " refused (see the hole list)";
   if (intersecting) text += "; " + std::to_string(intersecting) + " intersect the mesh";
-  return {text + ".", refused > 0};
+  if (request.left_open) {
+    text += "; " + std::to_string(request.left_open) +
+            " left open with their islands (the hole list says why)";
+  }
+  return {text + ".", refused > 0 || request.left_open > 0};
 }
 
 }  // namespace
 
 std::optional<FillRequest> Session::fill_all_request(std::size_t max_edges) const {
-  FillRequest request{{}, false, true, options_};
+  FillRequest request{{}, false, true, options_, {}};
   for (const auto& hole : holes_) {
-    if (unfinished(fills_[hole.id]) && (max_edges == 0 || hole.size() <= max_edges))
-      request.hole_ids.push_back(hole.id);
+    if (!unfinished(fills_[hole.id]) || closed_by(hole.id) >= 0) continue;
+    const bool stepped = has_steps(hole.id);
+    // An island is filled with its hole, unless that hole was filled without it.
+    const int outer = islands_.outer[hole.id];
+    if (!stepped && outer >= 0 && !has_steps(outer)) continue;
+    // An island of two holes, or one touching its hole: none of them is filled (islands.h).
+    if (!stepped && !islands_.problem[hole.id].empty()) {
+      ++request.left_open;
+      continue;
+    }
+    std::vector<int> joined = default_joined(hole.id);
+    std::size_t edges = hole.size();
+    for (const int id : joined) edges += holes_[id].size();
+    if (max_edges != 0 && edges > max_edges) continue;
+    request.hole_ids.push_back(hole.id);
+    if (!joined.empty()) request.joined[hole.id] = std::move(joined);
   }
   if (request.hole_ids.empty()) return std::nullopt;
   return request;
@@ -171,7 +175,10 @@ std::optional<FillResult> Session::compute(const FillRequest& request, Progress*
     if (progress && progress->cancelled()) return std::nullopt;
     HoleFill& fill = result.state.fills[id];
     while (unfinished(fill)) {
-      const FillStep step = make_step(id, request.options);
+      const auto joined = request.joined.find(id);
+      const FillStep step =
+          make_step(id, joined == request.joined.end() ? std::vector<int>{} : joined->second,
+                    request.options);
       const bool ran = run_step(result.state, holes_, step, &result.checkpoints, progress);
       if (progress && progress->cancelled()) return std::nullopt;
       // A failed stage is logged too, so that replay shows the same failure in the hole list.
@@ -187,7 +194,7 @@ std::optional<FillResult> Session::compute(const FillRequest& request, Progress*
     if (progress) progress->set_fraction(done / total);
   }
   if (progress && progress->cancelled()) return std::nullopt;
-  if (request.summarise) result.notice = summary(request.hole_ids, result.state.fills);
+  if (request.summarise) result.notice = summary(request, result.state.fills);
   return result;
 }
 
@@ -226,8 +233,20 @@ std::optional<LogChange> Session::options_request(const FillOptions& options) co
   if (selected_ < 0 || !has_steps(selected_) || options == options_) return std::nullopt;
   LogChange change{LogChange::Kind::Options, log_, selected_, 0, options};
   for (auto& step : change.log) {
-    if (step.hole_id == selected_) step = make_step(selected_, options);
+    if (step.hole_id == selected_) step = make_step(selected_, step.joined, options);
   }
+  return change;
+}
+
+std::optional<LogChange> Session::keep_request(bool right) const {
+  if (!compare_ || !comparison_ || comparison_stale_ || comparison_->hole_id != selected_)
+    return std::nullopt;
+  FillOptions options = (right ? comparison_->right : comparison_->left).options;
+  const Stage last = options.last_stage;
+  options.last_stage = options_.last_stage;
+  LogChange change{LogChange::Kind::Keep, without_hole(log_, selected_), selected_, 0, options};
+  for (int stage = 1; stage <= static_cast<int>(last); ++stage)
+    change.log.push_back(make_step(selected_, joined_, options));
   return change;
 }
 
@@ -251,6 +270,7 @@ void Session::apply(ChangeResult result) {
       revision_ = change.revision;
       break;
     case LogChange::Kind::Reset:
+    case LogChange::Kind::Keep:
       remember();
       revised();
       break;
@@ -261,6 +281,7 @@ void Session::apply(ChangeResult result) {
       break;
   }
   last_change_was_options_ = change.kind == LogChange::Kind::Options;
+  if (change.kind == LogChange::Kind::Keep) compare_ = false;
   log_ = std::move(change.log);
   selected_ = change.selected;
   options_ = change.options;
@@ -318,6 +339,8 @@ void Session::take(MeshState state, Checkpoints checkpoints) {
   fills_ = std::move(state.fills);
   checkpoints_ = std::move(checkpoints);
   changed();
+  joined_ = default_joined(selected_);
+  selection_changed();
 }
 
 bool Session::has_steps(int hole_id) const {

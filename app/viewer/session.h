@@ -38,6 +38,10 @@ struct FillRequest {
   bool one_stage = false;
   bool summarise = false;  // say afterwards how many were filled, refused, intersecting
   FillOptions options;
+  // The loops a listed hole is filled with (its islands, the hole it is bridged to); none when
+  // absent.
+  std::map<int, std::vector<int>> joined;
+  std::size_t left_open = 0;  // holes a problem with their islands keeps open (islands.h)
 };
 
 // What a fill made, computed apart from the session (Session::compute) and taken in as one
@@ -54,7 +58,7 @@ struct FillResult {
 // Undo, redo, resetting the selected hole or changing its options: another log, whose mesh
 // Session::compute rebuilds and Session::apply takes in.
 struct LogChange {
-  enum class Kind { Undo, Redo, Reset, Options };
+  enum class Kind { Undo, Redo, Reset, Options, Keep };  // Keep: a side of the comparison
   Kind kind = Kind::Undo;
   std::vector<FillStep> log;
   int selected = -1;
@@ -94,9 +98,27 @@ class Session {
   // Shows a message of the application's own (e.g. where a screenshot went).
   void tell(Notice notice) { notice_ = std::move(notice); }
 
-  // The selected hole, -1 for none.
+  // The selected hole, -1 for none. Selecting an island that has not been filled selects the
+  // hole it lies in, and selecting a loop that another hole's patch closed selects that hole.
   int selected() const { return selected_; }
   void select(int hole_id);
+  // The loops filled together with the selected hole (one patch around them): its islands as
+  // found at load (islands.h), or what shift-click made of them, or the hole to bridge to.
+  // Empty for a lone hole. A filled hole's are the ones its patch closed.
+  const std::vector<int>& joined() const { return joined_; }
+  bool in_selection(int hole_id) const;
+  // Shift-click: adds loop `hole_id` to the selection, or takes it out (the selected hole
+  // itself too: the next loop takes its place). False, with a notice, when the selected hole is
+  // filled already (reset it first) or the loop is filled or closed by another patch.
+  bool toggle(int hole_id);
+  // The islands found at load.
+  const IslandMap& islands() const { return islands_; }
+  // The hole whose patch also closed loop `hole_id`; -1 when none.
+  int closed_by(int hole_id) const;
+  // Why "Bridge" cannot close the gap between the selected loops: not exactly two loops, the
+  // first filled already, or the loops too far apart (JoinOptions::max_gap, as the command
+  // line's --bridge). Empty when it can: fill_selected() then joins the two with one band.
+  const std::string& bridge_problem() const { return bridge_problem_; }
 
   // The options the next step uses. Setting them while the selected hole has been stepped
   // re-runs that hole's steps with the new options, so its statistics stay live (from the
@@ -143,6 +165,10 @@ class Session {
   std::optional<LogChange> redo_request() const;
   std::optional<LogChange> reset_request() const;
   std::optional<LogChange> options_request(const FillOptions& options) const;
+  // The comparison's left or right result as the selected hole's fill: its steps with that
+  // side's options, up to the side's last stage, in place of the hole's own; turns the
+  // comparison off. Nothing when no comparison is showing.
+  std::optional<LogChange> keep_request(bool right) const;
   // Rebuilds the mesh of `change`'s log. Reads the session only, like compute(FillRequest);
   // reports the share of the steps it re-runs; nothing when cancelled.
   std::optional<ChangeResult> compute(const LogChange& change, Progress* progress = nullptr) const;
@@ -179,6 +205,8 @@ class Session {
   bool run(const std::optional<FillRequest>& request);
   bool run(const std::optional<LogChange>& change);
   bool has_steps(int hole_id) const;
+  std::vector<int> default_joined(int hole_id) const;
+  void selection_changed();
   void changed();
   void revised();
 
@@ -199,6 +227,9 @@ class Session {
   std::uint64_t last_revision_ = 0;
   bool last_change_was_options_ = false;
   int selected_ = -1;
+  std::vector<int> joined_;
+  std::string bridge_problem_;
+  IslandMap islands_;
   FillOptions options_;
   Notice notice_;
   std::uint64_t mesh_version_ = 0;

@@ -21,6 +21,7 @@ constexpr Shortcut kShortcuts[] = {
     {Command::ResetView, 'R', false, false, "R", "reset the view"},
     {Command::FillSelected, 'F', false, true, "Shift+F", "fill the selected hole (every stage)"},
     {Command::FillAll, 'F', true, false, "Ctrl+F", "fill all holes (up to the edge limit)"},
+    {Command::Bridge, 'B', false, false, "B", "bridge the two selected loops (shift-click)"},
     {Command::Help, kKeyF1, false, false, "F1", "this help"},
     {Command::Screenshot, kKeyF12, false, false, "F12", "save a screenshot"},
 };

@@ -19,6 +19,7 @@ enum class Command {
   ResetView,
   FillSelected,
   FillAll,
+  Bridge,
   Help,
   Screenshot,
 };

@@ -290,18 +290,34 @@ bool HoleSelection::includes(const Hole& hole) const {
 
 HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
                            const FillOptions& options) {
-  JoinedLoops joined;
-  const double seconds =
-      timed([&] { joined = plan_joined_loops(mesh, loops, options.triangulate, options.join); });
-  HoleFill fill =
-      fill_planned(mesh, joined.polygon, without_avoidance(options), &joined.plan, nullptr);
-  fill.times.triangulate_seconds += seconds;
+  HoleFill fill;
+  while (fill.stage() < options.last_stage && advance_joined(mesh, loops, fill, options)) {
+  }
+  return fill;
+}
+
+bool advance_joined(Mesh& mesh, const std::vector<const Hole*>& loops, HoleFill& fill,
+                    const FillOptions& options) {
+  if (loops.size() == 1) return advance(mesh, *loops.front(), fill, options);
+  const auto [advanced, scaled] = at_safe_scale(mesh, [&] {
+    if (fill.stage() != Stage::Original || fill.failed()) {
+      return advance_with(mesh, *loops.front(), fill, options, nullptr, nullptr);
+    }
+    JoinedLoops joined;
+    const double seconds =
+        timed([&] { joined = plan_joined_loops(mesh, loops, options.triangulate, options.join); });
+    fill.times.triangulate_seconds += seconds;
+    return advance_with(mesh, joined.polygon, fill, without_avoidance(options), &joined.plan,
+                        nullptr);
+  });
+  if (scaled) measure_again(mesh, fill);
   fill.boundary_edges = 0;
+  fill.joined_holes.clear();
   for (const Hole* loop : loops) {
     fill.boundary_edges += loop->size();
     if (loop != loops.front()) fill.joined_holes.push_back(loop->id);
   }
-  return fill;
+  return advanced;
 }
 
 std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,

@@ -3,7 +3,7 @@
 # close requests as a window manager sends them) under the X server xvfb-run started.
 #   interactive.sh SCENARIO VIEWER CLOSE_REQUEST ASSETS WORKDIR
 # Scenarios: close-unsaved, close-saved, save-as, save-native, garbage-mesh, scripted-save,
-# fill-all, fill-all-cancel, undo-redo. Exits non-zero with a message on
+# fill-all, fill-all-cancel, undo-redo, islands-bridge. Exits non-zero with a message on
 # the first expectation that does not hold.
 set -u
 scenario=$1 viewer=$2 close_request=$3 assets=$4 work=$5
@@ -49,6 +49,13 @@ eventually() {
 }
 title_is() { [ "$(title)" = "$1" ]; }
 faces() { grep -c '^f ' "$1"; }
+# How many edges of an OBJ's triangles have a single face: 0 for a closed surface.
+open_edges() {
+  awk '$1 == "f" {
+    for (i = 2; i <= 4; i++) { a = $i + 0; b = $(i == 4 ? 2 : i + 1) + 0
+      key = a < b ? a " " b : b " " a; count[key]++ } }
+    END { n = 0; for (k in count) if (count[k] == 1) n++; print n }' "$1"
+}
 
 cp "$assets/bunny.obj" "$work/bunny.obj"
 case $scenario in
@@ -117,6 +124,32 @@ undo-redo)
   keys ctrl+z
   eventually 20 title_is "bunny.obj - holefill viewer" || fail "Ctrl+Z after redo left '$(title)'"
   "$close_request" "$window"  # back at the saved state: quits at once
+  exits_within 20 0
+  ;;
+islands-bridge)
+  # A sphere cut around a cap (hole 1 with its island 0) and a capsule cut in two (holes 0 and
+  # 1 facing each other): Shift+F fills the hole around its island, B bridges the two loops.
+  export HOLEFILL_FILE_DIALOG=builtin
+  sphere="awk -f $(dirname "$0")/cut_sphere.awk -v rows=40"
+  $sphere -v cols=64 -v from=6 -v to=12 -v stretch=1 > island.obj
+  $sphere -v cols=48 -v from=18 -v to=22 -v stretch=2 > gap.obj
+  start island.obj --select-hole 0
+  keys shift+f
+  eventually 30 title_is "*island.obj - holefill viewer" || fail "Shift+F changed nothing: '$(title)'"
+  keys ctrl+s Return
+  eventually 20 test -f island-filled.obj || fail "Save wrote nothing: $(cat viewer.log)"
+  [ "$(open_edges island-filled.obj)" = 0 ] || fail "the island fill left open edges"
+  "$close_request" "$window"
+  exits_within 20 0
+  start gap.obj --select-hole 0 --add-hole 1
+  screenshot bridge-selected
+  keys b
+  eventually 30 title_is "*gap.obj - holefill viewer" || fail "B bridged nothing: '$(title)'"
+  screenshot bridge-filled
+  keys ctrl+s Return
+  eventually 20 test -f gap-filled.obj || fail "Save wrote nothing: $(cat viewer.log)"
+  [ "$(open_edges gap-filled.obj)" = 0 ] || fail "the bridge left open edges"
+  "$close_request" "$window"
   exits_within 20 0
   ;;
 fill-all)

@@ -57,7 +57,7 @@ TEST(HoleTable, FiltersByStatus) {
   ASSERT_TRUE(session.step(Stage::Triangulated));
   const auto rows = hole_rows(session);
   EXPECT_EQ(rows[0].status, HoleStatus::Partial);
-  EXPECT_STREQ(rows[0].stage, "triangulated");
+  EXPECT_EQ(rows[0].stage, "triangulated");
   HoleView view;
   view.only_filled = true;
   EXPECT_EQ(ids(arrange(rows, view)), (std::vector<int>{2}));

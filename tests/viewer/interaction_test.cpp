@@ -53,6 +53,30 @@ TEST(Interaction, AClickOnAFramedHoleSelectsItAndHoverFollowsTheCursor) {
   EXPECT_EQ(scene.interaction.hovered(), -1);
 }
 
+TEST(Interaction, AShiftClickAddsALoopToTheSelectionAndASecondTakesItOut) {
+  Scene scene;
+  scene.session.select(2);
+  const glm::vec2 hole = scene.on_screen(0);
+  InputEvent press = mouse(InputEvent::Kind::ButtonDown, hole);
+  press.shift = true;
+  InputEvent release = mouse(InputEvent::Kind::ButtonUp, hole);
+  release.shift = true;
+  scene.send(press);
+  scene.send(release);
+  EXPECT_EQ(scene.session.selected(), 2);
+  EXPECT_EQ(scene.session.joined(), std::vector<int>{0});
+  scene.send(press);
+  scene.send(release);
+  EXPECT_TRUE(scene.session.joined().empty());
+  // Shift and a drag pans, and picks nothing.
+  const glm::vec3 eye = scene.camera.eye();
+  scene.send(press);
+  scene.send(mouse(InputEvent::Kind::CursorMove, hole + glm::vec2(40.0f, 0.0f)));
+  scene.send(mouse(InputEvent::Kind::ButtonUp, hole + glm::vec2(40.0f, 0.0f)));
+  EXPECT_TRUE(scene.session.joined().empty());
+  EXPECT_GT(glm::length(scene.camera.eye() - eye), 1e-4f);
+}
+
 TEST(Interaction, ADragOrbitsInsteadOfPicking) {
   Scene scene;
   const glm::vec2 hole = scene.on_screen(1);

@@ -114,12 +114,28 @@ TEST(Replay, TheTriangulationSeesTheProgressAndStopsWhenCancelled) {
   MeshState state{session.mesh(), std::vector<HoleFill>(session.holes().size())};
   Progress cancelled;
   cancelled.cancel();
-  EXPECT_FALSE(run_step(state, session.holes(), make_step(0, {}), nullptr, &cancelled));
+  EXPECT_FALSE(run_step(state, session.holes(), make_step(0, {}, {}), nullptr, &cancelled));
   EXPECT_EQ(state.mesh.n_faces(), session.mesh().n_faces());
   // The progress is not kept in the log.
   session.select(0);
   ASSERT_TRUE(session.step(Stage::Triangulated));
   EXPECT_EQ(session.log().back().options.triangulate.progress, nullptr);
+}
+
+// Keeping a side of the comparison makes the hole's fill that side's: the same mesh.
+TEST(Replay, KeepingTheLeftSideOfTheComparisonFillsTheHoleAsItShows) {
+  Session session = filled_in_order(2, 0);
+  EXPECT_FALSE(session.keep_request(false));  // no comparison showing
+  session.set_compare(true);
+  const Comparison* comparison = session.comparison();
+  ASSERT_TRUE(comparison);
+  const Mesh left = comparison->left.mesh;
+  EXPECT_EQ(apply_counting_steps(session, session.keep_request(false)), 3);
+  EXPECT_TRUE(same_mesh(session.mesh(), left));
+  EXPECT_EQ(session.options().triangulate.weight, WeightKind::Liepa);
+  EXPECT_FALSE(session.compare());
+  ASSERT_TRUE(session.undo());
+  EXPECT_TRUE(same_mesh(session.mesh(), filled_in_order(2, 0).mesh()));
 }
 
 TEST(Replay, OnlyTheStageAnOptionAffectsCounts) {

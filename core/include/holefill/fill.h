@@ -86,6 +86,13 @@ HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options);
 HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
                            const FillOptions& options);
 
+// advance() for that region: the first stage joins the loops by bridges and triangulates the
+// joined polygon (a failure says why, e.g. no valid bridge); the others refine and smooth the
+// patch. fill.boundary_edges counts every loop's edges, fill.joined_holes names loops 1, 2, ...
+// One loop: advance() itself.
+bool advance_joined(Mesh& mesh, const std::vector<const Hole*>& loops, HoleFill& fill,
+                    const FillOptions& options);
+
 // Which holes fill_holes takes: the listed ids (all when empty), and only those with at most
 // max_boundary_edges boundary edges (no limit when 0). A hole comes with its islands and the
 // hole bridged to it (the limit then applies to their edges together; listing any one of them
