@@ -75,6 +75,8 @@ FillCounts report_problems(const std::vector<HoleFill>& fills, const std::string
       err << prefix << fill.hole_id << ": " << fill.refinement_note << "\n";
     if (!fill.smoothing_note.empty())
       err << prefix << fill.hole_id << ": " << fill.smoothing_note << "\n";
+    if (!fill.attributes_note.empty())
+      err << prefix << fill.hole_id << ": " << fill.attributes_note << "\n";
     if (fill.failed()) err << prefix << fill.hole_id << " not filled: " << fill.failure << "\n";
   }
   return counts;

@@ -39,6 +39,7 @@ Json fill_json(const HoleFill& fill) {
   if (fill.failed()) entry["failure"] = fill.failure;
   if (!fill.refinement_note.empty()) entry["refinement_note"] = fill.refinement_note;
   if (!fill.smoothing_note.empty()) entry["smoothing_note"] = fill.smoothing_note;
+  if (!fill.attributes_note.empty()) entry["attributes_note"] = fill.attributes_note;
   entry["self_intersections"] = fill.self_intersections;
   const IntersectionAvoidance& avoidance = fill.avoidance;
   entry["intersection_avoidance"] = {{"first_pairs", avoidance.first_pairs},

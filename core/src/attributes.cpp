@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+
+#include "holefill/obj_attributes.h"
+#include "patch_values.h"
 
 namespace holefill {
 namespace {
@@ -39,41 +41,6 @@ double full_intensity(ScalarType type) {
 
 namespace {
 
-// Harmonic values on the new vertices (the umbrella operator's fixed point, boundary values
-// fixed), by Gauss-Seidel sweeps from the mean of the boundary.
-void interpolate_harmonically(Mesh& mesh, const Patch& patch,
-                              const std::vector<OpenMesh::VPropHandleT<double>>& scalars) {
-  if (scalars.empty() || patch.new_vertices.empty()) return;
-  for (const auto property : scalars) {
-    double sum = 0.0;
-    for (const auto v : patch.boundary) sum += mesh.property(property, v);
-    const double mean =
-        patch.boundary.empty() ? 0.0 : sum / static_cast<double>(patch.boundary.size());
-    for (const auto v : patch.new_vertices) mesh.property(property, v) = mean;
-  }
-  constexpr int kMaxSweeps = 500;
-  constexpr double kTolerance = 1e-9;
-  for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
-    double change = 0.0;
-    for (const auto v : patch.new_vertices) {
-      for (const auto property : scalars) {
-        double sum = 0.0;
-        int count = 0;
-        for (const auto neighbour : mesh.vv_range(v)) {
-          sum += mesh.property(property, neighbour);
-          ++count;
-        }
-        if (count == 0) continue;
-        double& value = mesh.property(property, v);
-        const double updated = sum / count;
-        change = std::max(change, std::abs(updated - value) / (1.0 + std::abs(updated)));
-        value = updated;
-      }
-    }
-    if (change < kTolerance) break;
-  }
-}
-
 void recompute_normals(Mesh& mesh, const Patch& patch,
                        const std::array<OpenMesh::VPropHandleT<double>, 3>& normal) {
   for (const auto v : patch.new_vertices) {
@@ -83,28 +50,6 @@ void recompute_normals(Mesh& mesh, const Patch& patch,
     if (length > 0.0) sum /= length;
     for (int axis = 0; axis < 3; ++axis) mesh.property(normal[axis], v) = sum[axis];
   }
-}
-
-// Each patch face takes the value most original faces along the hole have (ties: the smallest).
-void take_majority_of_neighbours(Mesh& mesh, const Patch& patch,
-                                 OpenMesh::FPropHandleT<double> property) {
-  std::map<double, int> votes;
-  for (std::size_t i = 0; i < patch.boundary.size(); ++i) {
-    const VertexHandle from = patch.boundary[i];
-    const VertexHandle to = patch.boundary[(i + 1) % patch.boundary.size()];
-    const HalfedgeHandle h = mesh.find_halfedge(from, to);
-    if (!h.is_valid()) continue;
-    for (const auto side : {h, mesh.opposite_halfedge_handle(h)}) {
-      const FaceHandle face = mesh.face_handle(side);
-      if (face.is_valid() && face_stage(mesh, face) == Stage::Original) {
-        ++votes[mesh.property(property, face)];
-      }
-    }
-  }
-  if (votes.empty()) return;
-  const auto winner = std::max_element(
-      votes.begin(), votes.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
-  for (const auto f : patch.faces) mesh.property(property, f) = winner->first;
 }
 
 }  // namespace
@@ -145,9 +90,8 @@ OpenMesh::FPropHandleT<double> face_attribute(const Mesh& mesh, const std::strin
   return property;
 }
 
-void interpolate_patch_attributes(Mesh& mesh, const Patch& patch) {
+std::string interpolate_patch_attributes(Mesh& mesh, const Patch& patch) {
   const AttributeLayout layout = attribute_layout(mesh);
-  if (layout.empty()) return;
   std::vector<OpenMesh::VPropHandleT<double>> scalars;
   std::array<OpenMesh::VPropHandleT<double>, 3> normal;
   bool has_normals = true;
@@ -158,11 +102,12 @@ void interpolate_patch_attributes(Mesh& mesh, const Patch& patch) {
     normal[axis] = vertex_attribute(mesh, std::string("n") + static_cast<char>('x' + axis));
     has_normals = has_normals && normal[axis].is_valid();
   }
-  interpolate_harmonically(mesh, patch, scalars);
+  detail::interpolate_harmonically(mesh, patch, scalars);
   if (has_normals) recompute_normals(mesh, patch, normal);
   for (const auto& attribute : layout.face) {
-    take_majority_of_neighbours(mesh, patch, face_attribute(mesh, attribute.name));
+    detail::take_majority_along_hole(mesh, patch, face_attribute(mesh, attribute.name));
   }
+  return interpolate_patch_obj_attributes(mesh, patch);
 }
 
 bool vertex_colors(const Mesh& mesh, std::vector<std::array<float, 3>>& rgb) {

@@ -161,7 +161,8 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
     case Stage::Smoothed:
       return false;
   }
-  interpolate_patch_attributes(mesh, fill.patch);  // colours, normals, ... of the new elements
+  // Colours, normals, UVs, materials ... of the new elements.
+  fill.attributes_note = interpolate_patch_attributes(mesh, fill.patch);
   fill.stats = patch_stats(mesh, fill.patch);
   return true;
 }

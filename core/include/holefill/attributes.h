@@ -64,8 +64,10 @@ OpenMesh::FPropHandleT<double> face_attribute(const Mesh& mesh, const std::strin
 // Values for the patch's new vertices and its faces: scalar vertex attributes (colours, quality,
 // ...) are interpolated harmonically (umbrella weights) from the hole's boundary, normals
 // (nx, ny, nz) are the new geometry's, and face attributes take the value most faces along the
-// hole have. Original elements are not touched. Does nothing when the mesh carries no attributes.
-void interpolate_patch_attributes(Mesh& mesh, const Patch& patch);
+// hole have; then OBJ's corners and faces (interpolate_patch_obj_attributes). Original elements
+// are not touched. Returns a note saying what could not be given to the patch (empty when
+// nothing), e.g. texture coordinates across a UV seam.
+std::string interpolate_patch_attributes(Mesh& mesh, const Patch& patch);
 
 // The value of a colour channel at full intensity: the largest value of an integer type (255 for
 // uchar), 1 for floating-point types.

@@ -64,6 +64,7 @@ struct HoleFill {
   RefineResult refinement;
   std::string smoothing_note;   // e.g. why fairing fell back to umbrella smoothing
   std::string refinement_note;  // e.g. why refinement was undone
+  std::string attributes_note;  // what the patch could not be given, e.g. UVs across a seam
   // Pairs (patch triangle, other triangle of the mesh or of the patch) that intersect other than
   // along shared vertices and edges, after the last stage run. Stages that would make a patch
   // that did not intersect the mesh intersect it are undone (and say so in their note).

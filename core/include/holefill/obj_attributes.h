@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "holefill/mesh.h"
+#include "holefill/patch.h"
 
 namespace holefill {
 
@@ -35,5 +36,27 @@ struct ObjTables {
   // The material libraries (mtllib), as absolute paths: written relative to the output's folder.
   std::vector<std::filesystem::path> material_libraries;
 };
+
+struct ObjHandles {
+  OpenMesh::MPropHandleT<ObjTables> tables;
+  OpenMesh::HPropHandleT<int> texcoord, normal;
+  OpenMesh::FPropHandleT<int> material, group, object;
+  bool valid() const { return tables.is_valid(); }
+};
+
+// The mesh's OBJ properties; invalid handles when it has none.
+ObjHandles obj_handles(const Mesh& mesh);
+
+// The mesh's OBJ properties, added (empty tables, every number 0) where missing.
+ObjHandles add_obj_handles(Mesh& mesh);
+
+// Values for the patch's faces and corners (interpolate_patch_attributes calls it): each face
+// takes the material, group and object most original faces along the hole have; texture
+// coordinates are interpolated harmonically from the boundary's when the boundary lies in one
+// chart (each boundary vertex has one texture coordinate on all its original faces), otherwise
+// the patch has none; corner normals are the new geometry's (area-weighted face normals), a
+// boundary vertex whose original corners share one normal keeps it. Original elements are not
+// touched. Returns a note for the user when something could not be carried (empty otherwise).
+std::string interpolate_patch_obj_attributes(Mesh& mesh, const Patch& patch);
 
 }  // namespace holefill

@@ -149,9 +149,9 @@ std::string mesh_to_bytes(const Mesh& mesh, const fs::path& name) {
   if (has_deleted_elements(mesh)) {
     Mesh compacted = mesh;
     compacted.garbage_collection();
-    return io::mesh_file_bytes(compacted, ext);
+    return io::mesh_file_bytes(compacted, ext, name);
   }
-  return io::mesh_file_bytes(mesh, ext);
+  return io::mesh_file_bytes(mesh, ext, name);
 }
 
 void save_mesh(const Mesh& mesh, const fs::path& path) {

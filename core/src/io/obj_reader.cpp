@@ -292,11 +292,6 @@ void ObjReading::finish(LoadReport& report) {
   };
   warn(partial_texcoords_, "texture coordinates");
   warn(partial_normals_, "normals");
-  if (any_texcoord_ || any_normal_ || !soup.obj.materials.empty() || !soup.obj.groups.empty() ||
-      !soup.obj.objects.empty() || !soup.obj.material_libraries.empty()) {
-    report.warnings.push_back(
-        "the file's texture coordinates, normals, materials and groups were not kept");
-  }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "holefill/triangulate.h"
 #include "mesh_from_triangles.h"
+#include "soup_attributes.h"
 
 namespace holefill::io {
 namespace fs = std::filesystem;
@@ -16,54 +17,63 @@ namespace {
 // also keeps a non-convex polygon from folding over itself); larger ones as a fan.
 constexpr std::size_t kMaxOptimalPolygon = 64;
 
-void triangulate_face(const std::vector<Point>& positions, std::vector<int> corners,
-                      std::vector<Triangle>& triangles, LoadReport& report) {
+// Triangulates the soup's polygon f: each triangle's corners (soup positions) go to `triangles`
+// and, with `corners`, the soup corners (indices into soup.corners) they came from to `corners`.
+void triangulate_face(const Soup& soup, std::size_t f, std::vector<Triangle>& triangles,
+                      std::vector<Triangle>* corners, LoadReport& report) {
+  std::vector<int> ks;  // the polygon's soup corners
+  for (std::size_t k = soup.face_begin(f); k < soup.face_end[f]; ++k) {
+    ks.push_back(static_cast<int>(k));
+  }
+  auto vertex = [&soup](int k) { return soup.corners[k]; };
   // Repeated consecutive corners (the last one repeating the first included) add nothing.
-  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
-  while (corners.size() > 1 && corners.front() == corners.back()) corners.pop_back();
-  if (corners.size() < 3) {
+  ks.erase(std::unique(ks.begin(), ks.end(), [&](int a, int b) { return vertex(a) == vertex(b); }),
+           ks.end());
+  while (ks.size() > 1 && vertex(ks.front()) == vertex(ks.back())) ks.pop_back();
+  if (ks.size() < 3) {
     ++report.degenerate_faces_dropped;
     return;
   }
-  const int n = static_cast<int>(corners.size());
-  std::vector<Triangle> pieces;
+  const int n = static_cast<int>(ks.size());
+  std::vector<Triangle> pieces;  // positions in ks
   if (n == 3) {
-    pieces.push_back({corners[0], corners[1], corners[2]});
+    pieces.push_back({0, 1, 2});
   } else {
     ++report.polygons_triangulated;
-    if (corners.size() <= kMaxOptimalPolygon) {
+    if (ks.size() <= kMaxOptimalPolygon) {
       HolePolygon polygon;
-      for (const int c : corners) polygon.points.push_back(positions[c]);
-      polygon.outside_normals.assign(corners.size(), Point(0.0, 0.0, 0.0));
+      for (const int k : ks) polygon.points.push_back(soup.positions[vertex(k)]);
+      polygon.outside_normals.assign(ks.size(), Point(0.0, 0.0, 0.0));
       for (int i = 0; i < n; ++i) {
-        for (int k = i + 1; k < n; ++k) {
-          if (corners[i] == corners[k]) polygon.forbidden_chords.emplace_back(i, k);
+        for (int j = i + 1; j < n; ++j) {
+          if (vertex(ks[i]) == vertex(ks[j])) polygon.forbidden_chords.emplace_back(i, j);
         }
       }
       if (const auto optimal = triangulate_polygon(polygon, TriangulateOptions{})) {
-        for (const auto& t : optimal->triangles) {
-          pieces.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
-        }
+        for (const auto& t : optimal->triangles) pieces.push_back({t[0], t[1], t[2]});
       }
     }
     if (pieces.empty()) {
-      for (int c = 1; c + 1 < n; ++c) pieces.push_back({corners[0], corners[c], corners[c + 1]});
+      for (int c = 1; c + 1 < n; ++c) pieces.push_back({0, c, c + 1});
     }
   }
   bool dropped = false;
-  for (const auto& t : pieces) {
+  for (const auto& p : pieces) {
+    const Triangle t{vertex(ks[p[0]]), vertex(ks[p[1]]), vertex(ks[p[2]])};
     if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
       dropped = true;
-    } else {
-      triangles.push_back(t);
+      continue;
     }
+    triangles.push_back(t);
+    if (corners) corners->push_back({ks[p[0]], ks[p[1]], ks[p[2]]});
   }
   if (dropped) ++report.degenerate_faces_dropped;
 }
 
 // Removes triangles with the same corners in the same cyclic order as an earlier one, and their
-// entries in `sources` (the face each triangle came from).
-std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles, std::vector<int>& sources) {
+// entries in `sources` (the face each triangle came from) and `corners` (when not empty).
+std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles, std::vector<int>& sources,
+                                     std::vector<Triangle>& corners) {
   auto canonical = [](Triangle t) {
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     return t;
@@ -87,18 +97,20 @@ std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles, std::vect
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     if (duplicate[i]) continue;
     sources[kept] = sources[i];
+    if (!corners.empty()) corners[kept] = corners[i];
     triangles[kept++] = triangles[i];
   }
   triangles.resize(kept);
   sources.resize(kept);
+  if (!corners.empty()) corners.resize(kept);
   return count;
 }
 
 // Flips triangles so that neighbours across every edge with exactly two triangles use it in
 // opposite directions; per connected piece, the orientation most triangles have wins. Returns
-// the number flipped. Pieces that cannot be oriented (a Moebius strip) keep a conflict, which
-// detach_non_manifold resolves.
-std::size_t orient_consistently(std::vector<Triangle>& triangles) {
+// the number flipped, and turns `corners` (when not empty) alike. Pieces that cannot be oriented
+// (a Moebius strip) keep a conflict, which detach_non_manifold resolves.
+std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Triangle>& corners) {
   const int count = static_cast<int>(triangles.size());
   const std::vector<EdgeUse> uses = edge_uses(triangles);
   // Up to three neighbours per triangle, and whether each must take the opposite orientation.
@@ -139,6 +151,7 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles) {
     for (const int t : piece) {
       if (flip[t] != turn) continue;
       std::swap(triangles[t][1], triangles[t][2]);
+      if (!corners.empty()) std::swap(corners[t][1], corners[t][2]);
       ++flipped;
     }
   }
@@ -260,41 +273,20 @@ std::size_t count_duplicate_positions(const std::vector<Point>& positions) {
   return duplicates;
 }
 
-// Gives the mesh the soup's attributes: each vertex its source position's values, each face its
-// source polygon's.
-void copy_attributes(const Soup& soup, const std::vector<int>& vertex_origin,
-                     const std::vector<int>& face_origin, Mesh& mesh) {
-  if (soup.layout.empty()) return;
-  set_attribute_layout(mesh, soup.layout);
-  for (std::size_t a = 0; a < soup.layout.vertex.size(); ++a) {
-    const auto property = vertex_attribute(mesh, soup.layout.vertex[a].name);
-    for (const auto v : mesh.vertices()) {
-      mesh.property(property, v) = soup.vertex_values[a][vertex_origin[v.idx()]];
-    }
-  }
-  for (std::size_t a = 0; a < soup.layout.face.size(); ++a) {
-    const auto property = face_attribute(mesh, soup.layout.face[a].name);
-    for (const auto f : mesh.faces()) {
-      mesh.property(property, f) = soup.face_values[a][face_origin[f.idx()]];
-    }
-  }
-}
-
 }  // namespace
 
 Mesh build_mesh(const Soup& soup, LoadReport& report) {
+  const bool track_corners = has_corner_values(soup);
   std::vector<Triangle> triangles;
+  std::vector<Triangle> corners;   // the soup corners of each triangle, when tracked
   std::vector<int> triangle_face;  // the polygon each triangle came from
   triangles.reserve(soup.corners.size() / 3 + soup.face_count());
-  std::vector<int> corners;
   for (std::size_t f = 0; f < soup.face_count(); ++f) {
-    corners.assign(soup.corners.begin() + static_cast<std::ptrdiff_t>(soup.face_begin(f)),
-                   soup.corners.begin() + static_cast<std::ptrdiff_t>(soup.face_end[f]));
-    triangulate_face(soup.positions, corners, triangles, report);
+    triangulate_face(soup, f, triangles, track_corners ? &corners : nullptr, report);
     triangle_face.resize(triangles.size(), static_cast<int>(f));
   }
-  report.duplicate_faces_dropped = drop_duplicate_triangles(triangles, triangle_face);
-  report.faces_flipped = orient_consistently(triangles);
+  report.duplicate_faces_dropped = drop_duplicate_triangles(triangles, triangle_face, corners);
+  report.faces_flipped = orient_consistently(triangles, corners);
   if (report.format != "stl") {
     report.duplicate_positions = count_duplicate_positions(soup.positions);
   }
@@ -305,9 +297,18 @@ Mesh build_mesh(const Soup& soup, LoadReport& report) {
   report.vertices_split = split_closed_fans(triangles, detached, positions, origin);
   MeshSources sources;
   Mesh mesh = assemble(positions, triangles, detached, soup.positions.size(), report, sources);
-  for (auto& v : sources.vertex) v = origin[v];
-  for (auto& f : sources.face) f = triangle_face[f];
-  copy_attributes(soup, sources.vertex, sources.face, mesh);
+  SoupOrigins origins;
+  origins.vertex.reserve(sources.vertex.size());
+  for (const int v : sources.vertex) origins.vertex.push_back(origin[v]);
+  origins.face.reserve(sources.face.size());
+  for (const int t : sources.face) {
+    origins.face.push_back(triangle_face[t]);
+    if (!track_corners) continue;
+    origins.face_corners.push_back(corners[t]);
+    const Triangle& c = triangles[t];
+    origins.face_corner_vertices.push_back({origin[c[0]], origin[c[1]], origin[c[2]]});
+  }
+  copy_soup_attributes(soup, origins, mesh);
   return mesh;
 }
 

@@ -8,24 +8,10 @@
 #include <limits>
 
 #include "holefill/attributes.h"
+#include "text_out.h"
 
 namespace holefill::io {
 namespace {
-
-void append_number(std::string& out, double value) {
-  char text[32];
-  out.append(text, std::to_chars(text, text + sizeof text, value).ptr);
-}
-
-void append_number(std::string& out, float value) {
-  char text[32];
-  out.append(text, std::to_chars(text, text + sizeof text, value).ptr);
-}
-
-void append_number(std::string& out, long long value) {
-  char text[24];
-  out.append(text, std::to_chars(text, text + sizeof text, value).ptr);
-}
 
 // The value as `type` stores it: rounded and clamped for integer types (interpolated colours).
 template <class T>
@@ -167,62 +153,6 @@ std::string ply_bytes(const Mesh& mesh) {
   return out;
 }
 
-// Faces as "<prefix>a b c" with vertex indices counted from `base`, then whatever `after`
-// appends to the line.
-template <class After>
-void append_faces(const Mesh& mesh, std::string& out, const char* prefix, int base, After&& after) {
-  for (const auto f : mesh.faces()) {
-    out += prefix;
-    const char* separator = "";
-    for (const auto v : mesh.fv_range(f)) {
-      out += separator;
-      append_number(out, static_cast<long long>(v.idx()) + base);
-      separator = " ";
-    }
-    after(f);
-    out += '\n';
-  }
-}
-
-// Vertices as "<prefix>x y z", then whatever `after` appends to the line.
-template <class After>
-void append_vertices(const Mesh& mesh, std::string& out, const char* prefix, After&& after) {
-  for (const auto v : mesh.vertices()) {
-    const Point& p = mesh.point(v);
-    out += prefix;
-    for (int axis = 0; axis < 3; ++axis) {
-      if (axis) out += ' ';
-      append_number(out, p[axis]);
-    }
-    after(v);
-    out += '\n';
-  }
-}
-
-// OBJ with the common "v x y z r g b" colours (in [0, 1]: integer channels are scaled, others
-// written as they are, so OBJ colours round-trip exactly) when the mesh has colours.
-std::string obj_bytes(const Mesh& mesh) {
-  const AttributeLayout layout = attribute_layout(mesh);
-  std::vector<std::pair<OpenMesh::VPropHandleT<double>, double>> channels;  // and their scale
-  for (const char* name : {"red", "green", "blue"}) {
-    const auto found = std::find_if(layout.vertex.begin(), layout.vertex.end(),
-                                    [&](const ScalarAttribute& a) { return a.name == name; });
-    if (found == layout.vertex.end()) break;
-    channels.emplace_back(vertex_attribute(mesh, name), full_intensity(found->type));
-  }
-  if (channels.size() != 3) channels.clear();
-  std::string out = "# written by holefill\n";
-  append_vertices(mesh, out, "v ", [&](VertexHandle v) {
-    for (const auto& [property, scale] : channels) {
-      out += ' ';
-      append_number(out,
-                    scale == 1.0 ? mesh.property(property, v) : mesh.property(property, v) / scale);
-    }
-  });
-  append_faces(mesh, out, "f ", 1, [](FaceHandle) {});
-  return out;
-}
-
 // OFF; COFF, NOFF or CNOFF with the colours (in their own type: 0-255 or 0-1) and normals the
 // mesh carries, in the order the format puts them: position, normal, colour.
 std::string off_bytes(const Mesh& mesh) {
@@ -288,8 +218,9 @@ std::string stl_bytes(const Mesh& mesh) {
 
 }  // namespace
 
-std::string mesh_file_bytes(const Mesh& mesh, const std::string& ext) {
-  if (ext == ".obj") return obj_bytes(mesh);
+std::string mesh_file_bytes(const Mesh& mesh, const std::string& ext,
+                            const std::filesystem::path& output) {
+  if (ext == ".obj") return obj_bytes(mesh, output);
   if (ext == ".off") return off_bytes(mesh);
   if (ext == ".stl") return stl_bytes(mesh);
   return ply_bytes(mesh);

@@ -1,9 +1,11 @@
 // The bytes of a mesh file: OBJ, OFF, PLY or binary STL. Text numbers are the shortest text that
 // reads back to the same value (std::to_chars), so a round trip keeps every bit. PLY is written
 // in the encoding and types the mesh was read with (attributes.h's layout: float stays float)
-// with every attribute; OFF with its colours and normals (COFF, NOFF); OBJ with vertex colours.
+// with every attribute; OFF with its colours and normals (COFF, NOFF); OBJ with vertex colours,
+// texture coordinates, normals, materials, groups and objects (obj_attributes.h).
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 #include "holefill/mesh.h"
@@ -11,7 +13,12 @@
 namespace holefill::io {
 
 // The file for `mesh` in the format `ext` names (".obj", ".off", ".stl"; anything else is
-// written as PLY). Faces index live vertices only: the mesh must hold no deleted elements.
-std::string mesh_file_bytes(const Mesh& mesh, const std::string& ext);
+// written as PLY), to be written at `output` (an OBJ names its material libraries relative to
+// its folder). Faces index live vertices only: the mesh must hold no deleted elements.
+std::string mesh_file_bytes(const Mesh& mesh, const std::string& ext,
+                            const std::filesystem::path& output);
+
+// The OBJ file (obj_writer.cpp).
+std::string obj_bytes(const Mesh& mesh, const std::filesystem::path& output);
 
 }  // namespace holefill::io

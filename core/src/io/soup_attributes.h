@@ -1,0 +1,29 @@
+// Gives a mesh built from a soup (soup_to_mesh) what the soup carried beyond positions and
+// faces: attributes.h's vertex and face values and obj_attributes.h's corners, faces and tables.
+#pragma once
+
+#include <vector>
+
+#include "mesh_from_triangles.h"
+#include "soup.h"
+
+namespace holefill::io {
+
+// Where the mesh's elements came from: the soup position of each vertex, the soup polygon of
+// each face, and, when the soup has corner values, for each face the soup corners (indices
+// into soup.corners) its triangle was made of, in the triangle's order, with the triangle's
+// corner vertices (soup positions) to match them by.
+struct SoupOrigins {
+  std::vector<int> vertex;                     // per mesh vertex: soup position
+  std::vector<int> face;                       // per mesh face: soup polygon
+  std::vector<Triangle> face_corners;          // per mesh face: soup corners (when needed)
+  std::vector<Triangle> face_corner_vertices;  // per mesh face: their soup positions
+};
+
+// Whether the soup carries values per corner (the origins' corners are then needed).
+bool has_corner_values(const Soup& soup);
+
+// Copies the soup's attributes to the mesh's elements (nothing when it carries none).
+void copy_soup_attributes(const Soup& soup, const SoupOrigins& origins, Mesh& mesh);
+
+}  // namespace holefill::io
