@@ -1,5 +1,6 @@
-// Reading and writing meshes. OBJ, OFF, PLY (ASCII and binary) and STL (ASCII and binary) are
-// read by our own parsers, in double precision, into a list of polygons that is then checked and
+// Reading and writing meshes. OFF, PLY (ASCII and binary) and STL (ASCII and binary) are read by
+// our own parsers, OBJ through tinyobjloader with its numbers read again exactly, in double
+// precision, into a list of polygons that is then checked and
 // repaired before it becomes a mesh: polygons are triangulated, faces flipped to agree with
 // their neighbours, exact duplicates and faces using a vertex twice dropped, faces that would make
 // an edge non-manifold kept on their own copies of their corners, and a vertex where closed
@@ -37,11 +38,12 @@ struct LoadReport {
 };
 
 // Loads a triangle mesh with the attributes its file carries (attributes.h): PLY's vertex and
-// face properties, OFF's colours and normals, OBJ's vertex colours; what cannot be kept (other
-// PLY elements and lists, OBJ's vt/vn/materials) is named in a warning. The format is chosen by
-// the file's contents where they are unmistakable (a PLY or OFF header, a binary STL's size) and
-// by its extension otherwise; a file whose extension says otherwise is read by its contents,
-// with a warning.
+// face properties, OFF's colours and normals, OBJ's vertex colours, per-corner texture
+// coordinates and normals, materials, groups and material libraries (obj_attributes.h); what
+// cannot be kept (other PLY elements and lists, OBJ's smoothing groups) is named in a warning. The
+// format is chosen by the file's contents where they are unmistakable (a PLY or OFF header, a
+// binary STL's size) and by its extension otherwise; a file whose extension says otherwise is read
+// by its contents, with a warning.
 Mesh load_mesh(const std::filesystem::path& path, LoadReport* report = nullptr);
 
 // Reads a mesh from bytes already in memory; `name` stands in for the path in errors and
@@ -52,9 +54,10 @@ Mesh load_mesh_from_memory(const std::string& bytes, const std::filesystem::path
 // Writes OBJ, OFF, PLY or binary STL (by extension): numbers as the shortest text that reads back
 // to the same value, PLY in the encoding and property types it was read with and with every
 // attribute the mesh carries (attributes.h), OFF with its colours and normals, OBJ with vertex
-// colours; through write_output_file (output_file.h): either the whole file appears at `path` or
-// nothing changes there, links are followed and permissions kept. Throws FileError saying why it
-// could not be written.
+// colours and what obj_attributes.h keeps (material libraries named relative to `path`'s folder);
+// through write_output_file (output_file.h): either the whole file appears at `path` or nothing
+// changes there, links are followed and permissions kept. Throws FileError saying why it could not
+// be written.
 void save_mesh(const Mesh& mesh, const std::filesystem::path& path);
 
 // The bytes save_mesh writes for `mesh` in the format `name`'s extension says (.obj .off .ply

@@ -19,9 +19,10 @@ constexpr std::size_t kMaxOptimalPolygon = 64;
 
 // Triangulates the soup's polygon f: each triangle's corners (soup positions) go to `triangles`
 // and, with `corners`, the soup corners (indices into soup.corners) they came from to `corners`.
-void triangulate_face(const Soup& soup, std::size_t f, std::vector<Triangle>& triangles,
-                      std::vector<Triangle>* corners, LoadReport& report) {
-  std::vector<int> ks;  // the polygon's soup corners
+void triangulate_face(const Soup& soup, std::size_t f, std::vector<int>& ks,
+                      std::vector<Triangle>& triangles, std::vector<Triangle>* corners,
+                      LoadReport& report) {
+  ks.clear();  // the polygon's soup corners (the caller's, to spare an allocation per face)
   for (std::size_t k = soup.face_begin(f); k < soup.face_end[f]; ++k) {
     ks.push_back(static_cast<int>(k));
   }
@@ -281,8 +282,9 @@ Mesh build_mesh(const Soup& soup, LoadReport& report) {
   std::vector<Triangle> corners;   // the soup corners of each triangle, when tracked
   std::vector<int> triangle_face;  // the polygon each triangle came from
   triangles.reserve(soup.corners.size() / 3 + soup.face_count());
+  std::vector<int> polygon;
   for (std::size_t f = 0; f < soup.face_count(); ++f) {
-    triangulate_face(soup, f, triangles, track_corners ? &corners : nullptr, report);
+    triangulate_face(soup, f, polygon, triangles, track_corners ? &corners : nullptr, report);
     triangle_face.resize(triangles.size(), static_cast<int>(f));
   }
   report.duplicate_faces_dropped = drop_duplicate_triangles(triangles, triangle_face, corners);

@@ -72,8 +72,9 @@ bool parse_integer(std::string_view token, long long& value) {
 // A line ends at LF, CR LF or a lone CR (classic Mac files).
 bool Lines::next(std::string_view& line) {
   if (position_ >= text_.size()) return false;
-  std::size_t end = text_.find_first_of("\r\n", position_);
-  if (end == std::string_view::npos) end = text_.size();
+  // A plain loop: string_view::find_first_of calls memchr once per character.
+  std::size_t end = position_;
+  while (end < text_.size() && text_[end] != '\n' && text_[end] != '\r') ++end;
   line = text_.substr(position_, end - position_);
   position_ = end + 1;
   if (end + 1 < text_.size() && text_[end] == '\r' && text_[end + 1] == '\n') ++position_;
