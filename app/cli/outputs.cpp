@@ -31,6 +31,14 @@ void check_format(const FillArguments& a) {
   }
 }
 
+// The mesh output must not be the input: the original would be lost (by any name: a link, a hard
+// link, another spelling of the path).
+void check_mesh_output_path(const FillArguments& a) {
+  if (a.input == "-" || a.output == "-" || !same_file(a.output, a.input)) return;
+  throw UsageError("-o " + a.output + " is the input mesh " + a.input +
+                   "; holefill will not replace its input (write elsewhere, then move it)");
+}
+
 void check_report_path(const FillArguments& a) {
   const std::string& report = a.report_path;
   if (report.empty()) return;
@@ -55,6 +63,7 @@ std::string last_system_error() {
 
 void check_outputs(const FillArguments& a) {
   check_format(a);
+  check_mesh_output_path(a);
   check_report_path(a);
   if (a.output != "-") check_output_file(a.output);
   if (!a.report_path.empty() && a.report_path != "-") check_output_file(a.report_path);

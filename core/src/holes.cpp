@@ -18,14 +18,17 @@ Hole hole_through(const Mesh& mesh, HalfedgeHandle start) {
   } while (h != start && hole.halfedges.size() <= limit);
 
   std::unordered_map<int, int> passes;
-  for (const auto v : hole.vertices) {
-    if (++passes[v.idx()] == 2) ++hole.repeated_vertices;
-  }
   Point sum(0.0, 0.0, 0.0);
   double surrounding_length = 0.0;
   std::size_t surrounding_count = 0;
   for (const auto v : hole.vertices) {
     sum += mesh.point(v);
+    // A vertex the loop passes many times (a pinch of many fans) has its edges counted once:
+    // counting them at every pass made the loop quadratic in its passes.
+    if (++passes[v.idx()] > 1) {
+      if (passes[v.idx()] == 2) ++hole.repeated_vertices;
+      continue;
+    }
     for (const auto e : mesh.ve_range(v)) {
       surrounding_length += mesh.calc_edge_length(e);
       ++surrounding_count;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <nanoflann.hpp>
 #include <numeric>
 #include <unordered_map>
@@ -41,6 +42,27 @@ double default_tolerance(const Mesh& mesh) {
   return mesh.n_vertices() ? kDefaultStitchRelativeTolerance * (high - low).norm() : 0.0;
 }
 
+// For each point, the points within `tolerance` of it (itself included).
+std::vector<std::vector<VertexHandle>> vertices_within(const BoundaryPoints& points,
+                                                       double tolerance) {
+  PointTree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  // nanoflann keeps points strictly inside the (squared) radius: widen it, then filter exactly.
+  const double search_radius = std::nextafter(tolerance * tolerance, INFINITY);
+  std::vector<std::vector<VertexHandle>> near(points.vertices.size());
+  std::vector<std::pair<std::size_t, double>> found;
+  for (std::size_t s = 0; s < points.vertices.size(); ++s) {
+    const Point& at = points.mesh.point(points.vertices[s]);
+    found.clear();
+    tree.radiusSearch(at.data(), search_radius, found, nanoflann::SearchParams(32, 0.0f, false));
+    for (const auto& [index, squared] : found) {
+      const VertexHandle v = points.vertices[index];
+      if ((points.mesh.point(v) - at).norm() <= tolerance) near[s].push_back(v);
+    }
+  }
+  return near;
+}
+
 // Boundary halfedges a->b and b'->a' with a' within the tolerance of a and b' of b, each listed
 // once (lower index first). A halfedge that lies on more than one other is matched with none:
 // three or more sheets meet there, and joining any two of them would be a guess.
@@ -52,48 +74,44 @@ struct Matches {
 Matches matching_boundary_edges(const Mesh& mesh, double tolerance) {
   BoundaryPoints points{mesh, {}};
   std::vector<int> slot(mesh.n_vertices(), -1);
-  std::vector<std::vector<HalfedgeHandle>> incoming;  // boundary halfedges into each slot
   for (const auto h : mesh.halfedges()) {
-    if (!mesh.is_boundary(h)) continue;
     const VertexHandle to = mesh.to_vertex_handle(h);
-    if (slot[to.idx()] < 0) {
-      slot[to.idx()] = static_cast<int>(points.vertices.size());
-      points.vertices.push_back(to);
-      incoming.emplace_back();
-    }
-    incoming[slot[to.idx()]].push_back(h);
+    if (!mesh.is_boundary(h) || slot[to.idx()] >= 0) continue;
+    slot[to.idx()] = static_cast<int>(points.vertices.size());
+    points.vertices.push_back(to);
   }
   Matches matches;
   if (points.vertices.empty()) return matches;
-  PointTree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tree.buildIndex();
-  // nanoflann keeps points strictly inside the (squared) radius: widen it, then filter exactly.
-  const double search_radius = std::nextafter(tolerance * tolerance, INFINITY);
-  auto within = [&](VertexHandle a, VertexHandle b) {
-    return (mesh.point(a) - mesh.point(b)).norm() <= tolerance;
+  // Every boundary vertex is the end of a boundary halfedge, so both ends of one have a slot.
+  auto ends_key = [&](VertexHandle from, VertexHandle to) {
+    return (static_cast<std::uint64_t>(slot[from.idx()]) << 32) |
+           static_cast<std::uint32_t>(slot[to.idx()]);
   };
+  // Boundary halfedges by their ends, so that a vertex on thousands of them (a pinch of many fans)
+  // finds its partners by lookup, not by scanning them all for each one.
+  std::unordered_map<std::uint64_t, std::vector<HalfedgeHandle>> by_ends;
+  for (const auto h : mesh.halfedges()) {
+    if (mesh.is_boundary(h)) {
+      by_ends[ends_key(mesh.from_vertex_handle(h), mesh.to_vertex_handle(h))].push_back(h);
+    }
+  }
+  const std::vector<std::vector<VertexHandle>> near = vertices_within(points, tolerance);
 
   std::vector<int> match_of(mesh.n_halfedges(), -1);
-  std::vector<std::pair<std::size_t, double>> found;
-  for (std::size_t s = 0; s < points.vertices.size(); ++s) {
-    const VertexHandle p = points.vertices[s];
-    const Point& at = mesh.point(p);
-    found.clear();
-    tree.radiusSearch(at.data(), search_radius, found, nanoflann::SearchParams(32, 0.0f, false));
-    for (const auto h : mesh.voh_range(p)) {
-      if (!mesh.is_boundary(h)) continue;
-      const VertexHandle q = mesh.to_vertex_handle(h);
-      int count = 0;
-      for (const auto& [near, squared] : found) {
-        if (!within(p, points.vertices[near])) continue;
-        for (const auto other : incoming[near]) {
-          if (other != h && within(mesh.from_vertex_handle(other), q)) {
-            match_of[h.idx()] = count++ ? -2 : other.idx();
-          }
+  for (const auto h : mesh.halfedges()) {
+    if (!mesh.is_boundary(h)) continue;
+    const VertexHandle p = mesh.from_vertex_handle(h), q = mesh.to_vertex_handle(h);
+    int count = 0;
+    for (const VertexHandle to_near_p : near[slot[p.idx()]]) {
+      for (const VertexHandle from_near_q : near[slot[q.idx()]]) {
+        const auto found = by_ends.find(ends_key(from_near_q, to_near_p));
+        if (found == by_ends.end()) continue;
+        for (const auto other : found->second) {
+          if (other != h) match_of[h.idx()] = count++ ? -2 : other.idx();
         }
       }
-      if (count > 0) ++matches.halfedges_on_another;
     }
+    if (count > 0) ++matches.halfedges_on_another;
   }
   for (const auto h : mesh.halfedges()) {
     const int other = match_of[h.idx()];

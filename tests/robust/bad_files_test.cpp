@@ -181,6 +181,13 @@ TEST_F(BadFiles, AMissingPathIsRefused) {
   expect_refused(dir_ / "no" / "such" / "folder" / "mesh.ply", "no such file");
 }
 
+// A symbolic link loop was reported as "no such file"; the system's reason is named instead.
+TEST_F(BadFiles, ASymbolicLinkLoopIsRefusedWithTheSystemsReason) {
+  fs::create_symlink("b.obj", dir_ / "a.obj");
+  fs::create_symlink("a.obj", dir_ / "b.obj");
+  expect_refused(dir_ / "a.obj", "cannot be read (Too many levels of symbolic links)");
+}
+
 TEST_F(BadFiles, AnUnreadableFileIsRefused) {
   if (geteuid() == 0) GTEST_SKIP() << "root reads any file, so permissions cannot be tested";
   const fs::path file = write("locked.obj", obj_text(kTetraPoints, kTetraFaces));

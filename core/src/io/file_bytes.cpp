@@ -18,6 +18,10 @@ namespace {
 std::FILE* open_regular_file(const fs::path& path) {
   std::error_code ec;
   const auto status = fs::status(path, ec);
+  // Only a missing file is "no such file"; a link loop or a folder that cannot be searched says why.
+  if (ec && ec != std::errc::no_such_file_or_directory) {
+    fail(path, "cannot be read (" + ec.message() + ")");
+  }
   if (!fs::exists(status)) fail(path, "no such file");
   if (fs::is_directory(status)) fail(path, "is a directory, not a mesh file");
   if (!fs::is_regular_file(status)) fail(path, "is not a regular file");
