@@ -4,19 +4,22 @@
 #include <sys/resource.h>
 
 #include <initializer_list>
+#include <thread>
 
 #include "bench_holes.h"
 
 namespace holefill::bench {
 namespace {
 
-enum class Search { Full, FullOneThread, PlainLoop, Restricted };
+// Full: threads as the search chooses them (one on a busy machine); OneThread, AllCores: forced.
+enum class Search { Full, FullOneThread, FullAllCores, PlainLoop, Restricted };
 
 void triangulate(benchmark::State& state, WeightKind weight, Search search) {
   const HolePolygon polygon = wavy_hole(static_cast<int>(state.range(0)));
   TriangulateOptions options{weight};
   options.prune = search != Search::PlainLoop;
   if (search == Search::FullOneThread) options.threads = 1;
+  if (search == Search::FullAllCores) options.threads = std::thread::hardware_concurrency();
   options.restricted.above_edges = 0;  // the full search, whatever the size
   for (auto _ : state) {
     auto result = search == Search::Restricted ? triangulate_polygon_restricted(polygon, options)
@@ -39,6 +42,12 @@ void BM_TriangulateMaxMinOneThread(benchmark::State& s) {
 }
 void BM_TriangulateLiepaOneThread(benchmark::State& s) {
   triangulate(s, WeightKind::Liepa, Search::FullOneThread);
+}
+void BM_TriangulateMaxMinAllCores(benchmark::State& s) {
+  triangulate(s, WeightKind::MaxMin, Search::FullAllCores);
+}
+void BM_TriangulateLiepaAllCores(benchmark::State& s) {
+  triangulate(s, WeightKind::Liepa, Search::FullAllCores);
 }
 void BM_TriangulateMaxMinPlainLoop(benchmark::State& s) {
   triangulate(s, WeightKind::MaxMin, Search::PlainLoop);
@@ -67,6 +76,13 @@ const bool kRegistered = [] {
       benchmark::RegisterBenchmark("BM_TriangulateMaxMinOneThread", BM_TriangulateMaxMinOneThread),
       {50, 100, 200, 400, 500, 800, 2000});
   sizes(benchmark::RegisterBenchmark("BM_TriangulateLiepaOneThread", BM_TriangulateLiepaOneThread),
+        {50, 100, 200, 400, 500, 800, 2000});
+  // Several threads: wall-clock time is what counts (the CPU column has the main thread's only).
+  sizes(benchmark::RegisterBenchmark("BM_TriangulateMaxMinAllCores", BM_TriangulateMaxMinAllCores)
+            ->UseRealTime(),
+        {50, 100, 200, 400, 500, 800, 2000});
+  sizes(benchmark::RegisterBenchmark("BM_TriangulateLiepaAllCores", BM_TriangulateLiepaAllCores)
+            ->UseRealTime(),
         {50, 100, 200, 400, 500, 800, 2000});
   sizes(
       benchmark::RegisterBenchmark("BM_TriangulateMaxMinPlainLoop", BM_TriangulateMaxMinPlainLoop),

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -229,6 +230,17 @@ class HelperThreads {
   int count_ = 0;
 };
 
+// The cores that other processes leave to this search (the calling thread counted as free), by
+// the one-minute load average. On a busy machine the rows' threads are descheduled in turn and
+// the rows wait for each other: two threads sharing two cores with five other processes took
+// 1.5x as long as one thread (bench/README.md).
+int idle_cores() {
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  double load = 0.0;
+  if (getloadavg(&load, 1) != 1) return cores;
+  return std::clamp(static_cast<int>(std::floor(cores + 1 - load)), 1, cores);
+}
+
 template <bool kPrune, class Weight>
 std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weight& weight,
                                           int threads, const TriangulateOptions& options) {
@@ -274,10 +286,8 @@ std::optional<PolygonTriangulation> full_search(const HolePolygon& polygon,
   const int n = static_cast<int>(polygon.points.size());
   const int rows = std::max(1, n - 2);
   const bool automatic = options.threads == 0;
-  const int wanted =
-      automatic
-          ? (n < kParallelMinEdges ? 1 : static_cast<int>(std::thread::hardware_concurrency()))
-          : static_cast<int>(std::min<unsigned>(options.threads, rows));
+  const int wanted = automatic ? (n < kParallelMinEdges ? 1 : idle_cores())
+                               : static_cast<int>(std::min<unsigned>(options.threads, rows));
   // Threads asked for explicitly are the caller's business; automatic ones share the cores.
   const HelperThreads helpers(automatic ? wanted - 1 : 0);
   const int threads = std::clamp(automatic ? 1 + helpers.count() : wanted, 1, rows);
