@@ -12,13 +12,16 @@ namespace holefill::bench {
 namespace {
 
 // Full: threads as the search chooses them (one on a busy machine); OneThread, AllCores: forced.
-enum class Search { Full, FullOneThread, FullAllCores, PlainLoop, Restricted };
+// WithProgress: one thread, checking a Progress for a cancel (what that costs).
+enum class Search { Full, FullOneThread, FullAllCores, WithProgress, PlainLoop, Restricted };
 
 void triangulate(benchmark::State& state, WeightKind weight, Search search) {
   const HolePolygon polygon = wavy_hole(static_cast<int>(state.range(0)));
   TriangulateOptions options{weight};
   options.prune = search != Search::PlainLoop;
-  if (search == Search::FullOneThread) options.threads = 1;
+  Progress progress;
+  if (search == Search::FullOneThread || search == Search::WithProgress) options.threads = 1;
+  if (search == Search::WithProgress) options.progress = &progress;
   if (search == Search::FullAllCores) options.threads = std::thread::hardware_concurrency();
   options.restricted.above_edges = 0;  // the full search, whatever the size
   for (auto _ : state) {
@@ -48,6 +51,9 @@ void BM_TriangulateMaxMinAllCores(benchmark::State& s) {
 }
 void BM_TriangulateLiepaAllCores(benchmark::State& s) {
   triangulate(s, WeightKind::Liepa, Search::FullAllCores);
+}
+void BM_TriangulateMaxMinWithProgress(benchmark::State& s) {
+  triangulate(s, WeightKind::MaxMin, Search::WithProgress);
 }
 void BM_TriangulateMaxMinPlainLoop(benchmark::State& s) {
   triangulate(s, WeightKind::MaxMin, Search::PlainLoop);
@@ -84,6 +90,9 @@ const bool kRegistered = [] {
   sizes(benchmark::RegisterBenchmark("BM_TriangulateLiepaAllCores", BM_TriangulateLiepaAllCores)
             ->UseRealTime(),
         {50, 100, 200, 400, 500, 800, 2000});
+  sizes(benchmark::RegisterBenchmark("BM_TriangulateMaxMinWithProgress",
+                                     BM_TriangulateMaxMinWithProgress),
+        {100, 500});
   sizes(
       benchmark::RegisterBenchmark("BM_TriangulateMaxMinPlainLoop", BM_TriangulateMaxMinPlainLoop),
       {100, 400});
