@@ -107,6 +107,30 @@ HoleFill bridge_and_check(const Mesh& before, Mesh& after, std::pair<int, int> b
   return fills[0];
 }
 
+// The viewer steps a joined fill one stage at a time (advance_joined); fill_holes plans and adds
+// it in one go: both make the very same mesh, and the steps report the stages in order.
+TEST(Bridge, AdvancingJoinedLoopsStageByStageMakesWhatFillHolesMakes) {
+  const Mesh before = capsule_without([](const Point& c) { return std::abs(c[2]) < 0.5; });
+  const auto holes = find_holes(before);
+  ASSERT_EQ(holes.size(), 2u);
+  Mesh stepped = before;
+  HoleFill fill;
+  for (const Stage stage : {Stage::Triangulated, Stage::Refined, Stage::Smoothed}) {
+    ASSERT_TRUE(advance_joined(stepped, {&holes[0], &holes[1]}, fill, {})) << fill.failure;
+    EXPECT_EQ(fill.stage(), stage);
+  }
+  EXPECT_FALSE(advance_joined(stepped, {&holes[0], &holes[1]}, fill, {}));
+  EXPECT_EQ(fill.joined_holes, std::vector<int>{1});
+  EXPECT_EQ(fill.boundary_edges, holes[0].size() + holes[1].size());
+  Mesh direct = before;
+  HoleSelection selection;
+  selection.bridges = {{0, 1}};
+  fill_holes(direct, holes, {}, selection);
+  ASSERT_EQ(stepped.n_vertices(), direct.n_vertices());
+  ASSERT_EQ(stepped.n_faces(), direct.n_faces());
+  for (const auto v : stepped.vertices()) EXPECT_EQ(stepped.point(v), direct.point(v));
+}
+
 TEST(Bridge, SpliceVisitsTheBridgeEndsTwice) {
   Hole outer, inner;
   for (int i = 0; i < 4; ++i) {
