@@ -18,17 +18,23 @@ namespace holefill::testing {
 inline const std::vector<Point> kTetraPoints{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 inline const std::vector<std::vector<int>> kTetraFaces{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
 
-inline std::string off_text(const std::vector<Point>& points,
-                            const std::vector<std::vector<int>>& faces) {
-  std::ostringstream text;
+// The body OFF and ASCII PLY share after their headers: "x y z" lines, then "n i j k" lines.
+inline void put_points_and_polygons(std::ostringstream& text, const std::vector<Point>& points,
+                                    const std::vector<std::vector<int>>& faces) {
   text.precision(17);
-  text << "OFF\n" << points.size() << ' ' << faces.size() << " 0\n";
   for (const auto& p : points) text << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
   for (const auto& f : faces) {
     text << f.size();
     for (const int c : f) text << ' ' << c;
     text << '\n';
   }
+}
+
+inline std::string off_text(const std::vector<Point>& points,
+                            const std::vector<std::vector<int>>& faces) {
+  std::ostringstream text;
+  text << "OFF\n" << points.size() << ' ' << faces.size() << " 0\n";
+  put_points_and_polygons(text, points, faces);
   return text.str();
 }
 
@@ -68,13 +74,7 @@ inline std::string ascii_ply(const std::vector<Point>& points,
   text << "ply\nformat ascii 1.0\nelement vertex " << points.size()
        << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << faces.size()
        << "\nproperty list uchar int vertex_indices\nend_header\n";
-  text.precision(17);
-  for (const auto& p : points) text << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  for (const auto& f : faces) {
-    text << f.size();
-    for (const int c : f) text << ' ' << c;
-    text << '\n';
-  }
+  put_points_and_polygons(text, points, faces);
   return text.str();
 }
 
