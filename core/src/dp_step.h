@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 
+#include "geometry.h"
 #include "holefill/triangulate.h"
 
 namespace holefill::detail {
@@ -14,11 +15,7 @@ namespace holefill::detail {
 // A triangle is degenerate when its smallest angle's sine is below this (about 1e-10 rad).
 inline constexpr double kDegenerateSine = 1e-10;
 
-inline Point unit_normal(const Point& a, const Point& b, const Point& c) {
-  Point n = OpenMesh::cross(b - a, c - a);
-  const double length = n.norm();
-  return length > 0.0 ? n / length : Point(0.0, 0.0, 0.0);
-}
+using geometry::unit_normal;
 
 inline bool is_zero(const Point& p) { return p[0] == 0.0 && p[1] == 0.0 && p[2] == 0.0; }
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "geometry.h"
+
 namespace holefill {
 namespace {
 constexpr const char* kFaceStage = "holefill:face_stage";
@@ -11,11 +13,6 @@ constexpr const char* kScale = "holefill:scale";
 template <class Handle>
 void find_or_add(Mesh& mesh, Handle& handle, const char* name) {
   if (!mesh.get_property_handle(handle, name)) mesh.add_property(handle, name);
-}
-
-double angle_at(const Point& corner, const Point& a, const Point& b) {
-  const Point u = a - corner, v = b - corner;
-  return std::atan2(OpenMesh::cross(u, v).norm(), OpenMesh::dot(u, v));
 }
 
 // Whether the angles at c and d opposite edge a-b clearly sum to at most pi, without atan2: for
@@ -64,8 +61,8 @@ bool should_swap_edge(const Mesh& mesh, EdgeHandle edge) {
   const Point& c = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h0)));
   const Point& d = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h1)));
   if (clearly_delaunay(a, b, c, d)) return false;  // most edges: no atan2 needed
-  const double opposite_now = angle_at(c, a, b) + angle_at(d, a, b);
-  const double opposite_swapped = angle_at(a, c, d) + angle_at(b, c, d);
+  const double opposite_now = geometry::angle_at(c, a, b) + geometry::angle_at(d, a, b);
+  const double opposite_swapped = geometry::angle_at(a, c, d) + geometry::angle_at(b, c, d);
   // On a curved patch both diagonals of a quad can see more than pi; swapping only when it lowers
   // the opposite-angle sum keeps relaxation from swapping an edge back and forth. The margin
   // keeps co-circular configurations still.

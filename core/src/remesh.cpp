@@ -8,6 +8,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "geometry.h"
 #include "holefill/triangulate.h"
 
 namespace holefill {
@@ -27,15 +28,6 @@ bool in_patch(const FaceSet& patch_faces, FaceHandle f) {
   return f.is_valid() && patch_faces.count(f.idx());
 }
 
-double angle_at(const Point& corner, const Point& a, const Point& b) {
-  const Point u = a - corner, v = b - corner;
-  return std::atan2(OpenMesh::cross(u, v).norm(), OpenMesh::dot(u, v));
-}
-
-Point face_normal(const Point& a, const Point& b, const Point& c) {
-  return OpenMesh::cross(b - a, c - a);  // length: twice the area
-}
-
 // target_valence(), with the patch's faces as a set.
 int target_valence_in(const Mesh& mesh, const FaceSet& patch_faces, VertexHandle v) {
   double patch_angle = 0.0, other_angle = 0.0;
@@ -45,7 +37,7 @@ int target_valence_in(const Mesh& mesh, const FaceSet& patch_faces, VertexHandle
     if (f.is_valid()) {
       const Point& b = mesh.point(mesh.to_vertex_handle(h));
       const Point& c = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
-      const double angle = angle_at(mesh.point(v), b, c);
+      const double angle = geometry::angle_at(mesh.point(v), b, c);
       (in_patch(patch_faces, f) ? patch_angle : other_angle) += angle;
       patch_triangles += in_patch(patch_faces, f);
     }
@@ -78,10 +70,6 @@ FlipQuad quad_of(const Mesh& mesh, EdgeHandle e) {
 // can squeeze them further.
 constexpr double kSliverAngle = 20.0 * M_PI / 180.0;
 
-double min_angle_of(const Point& a, const Point& b, const Point& c) {
-  return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)});
-}
-
 // The flip keeps the surface's shape: both new triangles are proper, face the way the old pair
 // did, bend against each other no more than allowed, and are no slivers.
 bool flip_keeps_shape(const Mesh& mesh, const FlipQuad& q, double max_dihedral) {
@@ -91,15 +79,15 @@ bool flip_keeps_shape(const Mesh& mesh, const FlipQuad& q, double max_dihedral) 
   if (measure_triangle(c, d, b, false).degenerate || measure_triangle(d, c, a, false).degenerate) {
     return false;
   }
-  const Point old1 = face_normal(a, b, c), old2 = face_normal(b, a, d);
-  const Point new1 = face_normal(c, d, b), new2 = face_normal(d, c, a);
+  const Point old1 = geometry::area_normal(a, b, c), old2 = geometry::area_normal(b, a, d);
+  const Point new1 = geometry::area_normal(c, d, b), new2 = geometry::area_normal(d, c, a);
   const Point old_sum = old1.normalized() + old2.normalized();
   if (OpenMesh::dot(new1, old_sum) <= 0.0 || OpenMesh::dot(new2, old_sum) <= 0.0) return false;
   const double old_dihedral = angle_between_normals(old1.normalized(), old2.normalized());
   const double new_dihedral = angle_between_normals(new1.normalized(), new2.normalized());
   if (new_dihedral > std::max(max_dihedral, old_dihedral)) return false;
-  const double old_min = std::min(min_angle_of(a, b, c), min_angle_of(b, a, d));
-  const double new_min = std::min(min_angle_of(c, d, b), min_angle_of(d, c, a));
+  const double old_min = std::min(geometry::min_angle(a, b, c), geometry::min_angle(b, a, d));
+  const double new_min = std::min(geometry::min_angle(c, d, b), geometry::min_angle(d, c, a));
   return new_min >= std::min(old_min, kSliverAngle);
 }
 
@@ -197,7 +185,7 @@ class PatchRemesher {
     std::array<Point, 3> p;
     int c = 0;
     for (const auto u : mesh_.fv_range(f)) p[c++ % 3] = mesh_.point(u);
-    return face_normal(p[0], p[1], p[2]);
+    return geometry::area_normal(p[0], p[1], p[2]);
   }
 
   std::vector<Point> fan_normals(VertexHandle v) const {
@@ -212,7 +200,7 @@ class PatchRemesher {
       std::array<Point, 3> p;
       int c = 0;
       for (const auto u : mesh_.fv_range(f)) p[c++ % 3] = mesh_.point(u);
-      smallest = std::min(smallest, min_angle_of(p[0], p[1], p[2]));
+      smallest = std::min(smallest, geometry::min_angle(p[0], p[1], p[2]));
     }
     return smallest;
   }
@@ -225,7 +213,7 @@ class PatchRemesher {
       int c = 0;
       for (const auto u : mesh_.fv_range(f)) p[c++ % 3] = mesh_.point(u);
       if (measure_triangle(p[0], p[1], p[2], false).degenerate) return false;
-      if (OpenMesh::dot(face_normal(p[0], p[1], p[2]), before[i++]) <= 0.0) return false;
+      if (OpenMesh::dot(geometry::area_normal(p[0], p[1], p[2]), before[i++]) <= 0.0) return false;
     }
     return true;
   }
