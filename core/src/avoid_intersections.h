@@ -1,4 +1,4 @@
-// Intersection avoidance (issue 11): on CAD parts (holes across sharp edges, long thin slots,
+// Intersection avoidance: on CAD parts (holes across sharp edges, long thin slots,
 // boundaries far from planar) the weight's best triangulation of a hole can cut through the mesh
 // around it, and refinement and smoothing cannot undo that. The planned triangles are checked
 // against the mesh and each other before they are added; those that intersect are forbidden

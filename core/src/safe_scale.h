@@ -1,4 +1,4 @@
-// Meshes at any finite scale (issue 17): the stages compute squared lengths and norms of cross
+// Meshes at any finite scale: the stages compute squared lengths and norms of cross
 // products, which overflow beyond coordinates of about 1e77 and underflow below about 1e-77
 // (an octahedron at 8.5e153 once crashed the intersection check; at 1e200 every triangle looked
 // degenerate). A mesh whose largest coordinate lies outside [2^-kMaxExponent, 2^kMaxExponent] is

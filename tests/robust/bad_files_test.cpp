@@ -1,4 +1,4 @@
-// Every kind of bad input file of issue #5: each is refused with a FileError that names the file
+// Every kind of bad input file: each is refused with a FileError that names the file
 // and the problem (and the CLI exits with kBadInput, writing nothing), or read with a repair that
 // the LoadReport counts and states (and the CLI goes on).
 #include <unistd.h>
@@ -287,7 +287,7 @@ TEST_F(BadFiles, PolygonsAreTriangulatedWithoutFolding) {
       area += 0.5 * OpenMesh::cross(p[1] - p[0], p[2] - p[0]).norm();
     }
     EXPECT_NEAR(area, 1.0 + 4.0, 1e-12);  // nothing overlaps: the areas add up
-    // A flat sheet's rim is not a hole: a patch would cover its back (exit 5 before issue #11).
+    // A flat sheet's rim is not a hole: a patch would cover its back (it once was, exit 5).
     const CliRun run = expect_fill_exit(file, cli::kOk);
     EXPECT_NE(run.err.find("loop 0 is not a hole but the rim of a flat piece of 4 faces"),
               std::string::npos)

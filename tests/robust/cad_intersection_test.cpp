@@ -1,4 +1,4 @@
-// Patches that never cut the part (issue 11): CAD-like parts with holes across sharp edges of thin
+// Patches that never cut the part: CAD-like parts with holes across sharp edges of thin
 // walls, long thin slots and strongly non-planar boundaries. On these the weight's best
 // triangulation cuts through the part (checked below with the avoidance off); with it on, every
 // hole closes cleanly: manifold, oriented, originals bit for bit, no degenerate triangle, and no
@@ -136,7 +136,7 @@ TEST_P(CadParts, HolesCloseWithoutCuttingThePart) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Issue11, CadParts,
+INSTANTIATE_TEST_SUITE_P(Parts, CadParts,
                          ::testing::Combine(::testing::ValuesIn(cad_cases()),
                                             ::testing::Values(WeightKind::MaxMin, WeightKind::Liepa,
                                                               WeightKind::Area)),

@@ -1,4 +1,4 @@
-// Dirty meshes of issue #11, generated: what exporters, scanners and STL soups hand a user.
+// Dirty meshes, generated: what exporters, scanners and STL soups hand a user.
 // Each generator returns a soup (points and faces as a file lists them) whose dirt is known
 // exactly, so that the tests can assert what stitching, pinch filling, component removal and
 // border classification must make of it.

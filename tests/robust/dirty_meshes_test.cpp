@@ -1,4 +1,4 @@
-// The dirty meshes of issue #11 end to end through `holefill fill`: each generated mesh has a
+// The dirty meshes end to end through `holefill fill`: each generated mesh has a
 // known outcome (holes closed or reported, borders kept, pieces removed), and every output must
 // be oriented and manifold, keep the (stitched) input's elements bit for bit, and have no
 // degenerate patch triangle.

@@ -1,4 +1,4 @@
-// The guarantees every fill must keep (issue #5), checked on a mesh before and after: the
+// The guarantees every fill must keep, checked on a mesh before and after: the
 // original part unchanged bit for bit, only patch elements added, an oriented mesh no less
 // manifold than before, each filled hole's loop gone and every other loop exactly as it was, and
 // no degenerate patch triangle. Free of GoogleTest, so the fuzz targets use it too.

@@ -1,4 +1,4 @@
-// Self-intersections (issue #5): a patch that must cross the mesh is filled and reported for its
+// Self-intersections: a patch that must cross the mesh is filled and reported for its
 // hole; where there is room for a valid patch, the fill makes none, and a stage that would make
 // one is undone.
 #include <unistd.h>
@@ -276,7 +276,7 @@ Mesh octahedron_without_a_face(double size) {
 }
 
 TEST(PatchIntersections, CoordinatesNearTheLargestDoublesAreSafe) {
-  // Issue 17: at |x| = 8.5e153 squared lengths overflow; the intersection grid's margin became
+  // At |x| = 8.5e153 squared lengths overflow; the intersection grid's margin became
   // infinite and a cell index NaN, and the grid was written out of bounds (SIGSEGV). At 1e200
   // and 1e-300 every triangle looked degenerate and the hole was refused. Any scale now gives
   // the unit octahedron's patch, scaled (the fill runs at a safe power-of-two scale).

@@ -1,4 +1,4 @@
-// Bounded work and limits that say what they are (issue 17): a large --tau is capped against the
+// Bounded work and limits that say what they are: a large --tau is capped against the
 // boundary's density instead of running for minutes, and a hole too large for the dynamic
 // program is refused with the limit that applies to it.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Pinched loops (issue #11): a loop passing twice through one vertex is filled so that the vertex
+// Pinched loops: a loop passing twice through one vertex is filled so that the vertex
 // ends up with one fan of faces, whichever way the loop pairs the fans' sides there.
 #include <fstream>
 

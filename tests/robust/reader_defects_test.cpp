@@ -1,4 +1,4 @@
-// The reader defects of issue #17: each test reproduces a file that was misread (silently, or
+// Reader defects: each test reproduces a file that was misread (silently, or
 // with a misleading message) before its fix.
 #include <sys/resource.h>
 #include <sys/wait.h>

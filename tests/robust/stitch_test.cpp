@@ -1,4 +1,4 @@
-// Stitching (issue #11): seams and cracks of generated dirty meshes are zipped back into exactly
+// Stitching: seams and cracks of generated dirty meshes are zipped back into exactly
 // the surface they were cut from, and nothing else is joined.
 #include "holefill/stitch.h"
 

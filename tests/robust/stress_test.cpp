@@ -1,4 +1,4 @@
-// Stress (issue #5): five hundred random meshes (spheres, terrains, tori and tubes with random
+// Stress: five hundred random meshes (spheres, terrains, tori and tubes with random
 // faces and balls of faces removed, jittered points, flipped and duplicated faces, small bodies
 // dropped near the holes), filled with random parameters, all at once or stepped hole by hole in
 // a random order like the viewer does; every fill must keep the guarantees.

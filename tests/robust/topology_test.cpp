@@ -1,4 +1,4 @@
-// Awkward topology of issue #5. Each mesh is written as an OBJ file, loaded, and every hole
+// Awkward topology. Each mesh is written as an OBJ file, loaded, and every hole
 // filled; every fill must keep the guarantees of fill_guarantees.h, each hole is either filled or
 // left exactly as it was with a reason, and the CLI's exit code says which happened.
 #include <cmath>

@@ -1,4 +1,4 @@
-// The viewer with bad input (issue #5): opening any file that load_mesh refuses leaves the mesh
+// The viewer with bad input: opening any file that load_mesh refuses leaves the mesh
 // that was open, its holes and its fill steps as they were, and the notice names the file and
 // the problem. The session is the viewer's logic without a window.
 #include <gtest/gtest.h>

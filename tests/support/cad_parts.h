@@ -1,4 +1,4 @@
-// CAD-like parts made in code for the intersection tests (issue 11): solids made of boxes on a
+// CAD-like parts made in code for the intersection tests: solids made of boxes on a
 // grid with uneven spacing (so that walls can be thin), as a CAD export would triangulate them,
 // and holes cut out of their surface.
 #pragma once

@@ -1,4 +1,4 @@
-// An independent, exact check of patch intersections for the tests (issue 11): GMP rationals on
+// An independent, exact check of patch intersections for the tests: GMP rationals on
 // the coordinates as stored, no tolerance, and a different method from the library's
 // (triangle_intersection.cpp): each triangle's section by the other's plane, compared along the
 // planes' common line. Two triangles intersect when the interior of one meets the other, closed;
