@@ -40,7 +40,9 @@ void row_tooltip(const Session& session, const HoleRow& row) {
   if (!row.failure.empty()) {
     ImGui::SetTooltip("Hole %d: %s", row.id, row.failure.c_str());
   } else if (session.is_border(row.id)) {
-    ImGui::SetTooltip("Loop %d looks like the border of an open surface", row.id);
+    ImGui::SetTooltip(
+        "Loop %d looks like the border of an open surface: Fill all leaves it, Fill closes it",
+        row.id);
   }
 }
 

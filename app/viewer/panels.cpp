@@ -260,7 +260,8 @@ void step_section(Session& session, Worker& worker, UiState& ui) {
     start_fill(worker, session, session.fill_all_request(limit));
   ImGui::EndDisabled();
   tooltip(
-      "Every open hole's remaining stages, on a worker: Cancel leaves the mesh as it was "
+      "Every open hole's remaining stages (with its islands; borders of open surfaces are left "
+      "for you to fill one by one), on a worker: Cancel leaves the mesh as it was "
       "(Ctrl+F)");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90.0f);

@@ -132,6 +132,10 @@ Notice summary(const FillRequest& request, const std::vector<HoleFill>& fills) {
     text += "; " + std::to_string(request.left_open) +
             " left open with their islands (the hole list says why)";
   }
+  if (request.borders_left) {
+    text += "; " + std::to_string(request.borders_left) +
+            " left open as borders (select one and Fill to close it)";
+  }
   return {text + ".", refused > 0 || request.left_open > 0};
 }
 
@@ -142,6 +146,11 @@ std::optional<FillRequest> Session::fill_all_request(std::size_t max_edges) cons
   for (const auto& hole : holes_) {
     if (!unfinished(fills_[hole.id]) || closed_by(hole.id) >= 0) continue;
     const bool stepped = has_steps(hole.id);
+    // The border of an open surface is no hole to close, unless the user fills it on its own.
+    if (!stepped && borders_[hole.id]) {
+      ++request.borders_left;
+      continue;
+    }
     // An island is filled with its hole, unless that hole was filled without it.
     const int outer = islands_.outer[hole.id];
     if (!stepped && outer >= 0 && !has_steps(outer)) continue;

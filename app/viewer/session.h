@@ -41,7 +41,8 @@ struct FillRequest {
   // The loops a listed hole is filled with (its islands, the hole it is bridged to); none when
   // absent.
   std::map<int, std::vector<int>> joined;
-  std::size_t left_open = 0;  // holes a problem with their islands keeps open (islands.h)
+  std::size_t left_open = 0;     // holes a problem with their islands keeps open (islands.h)
+  std::size_t borders_left = 0;  // loops taken as an open surface's border (borders.h), skipped
 };
 
 // What a fill made, computed apart from the session (Session::compute) and taken in as one
@@ -135,7 +136,8 @@ class Session {
   // Runs the selected hole's remaining stages.
   bool fill_selected();
   // Runs every hole's remaining stages with the current options (only holes of at most
-  // `max_edges` boundary edges when it is not 0) and says how many were filled.
+  // `max_edges` boundary edges when it is not 0; each with its islands; not the borders of open
+  // surfaces, which the user fills one by one) and says how many were filled.
   bool fill_all(std::size_t max_edges = 0);
 
   // The same three as requests, for running them elsewhere (nothing when there is nothing to

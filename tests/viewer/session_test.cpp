@@ -256,6 +256,21 @@ TEST(Session, ComparisonStartsFromTheHoleBeforeItsOwnSteps) {
   EXPECT_EQ(comparison->right.fill.stats.new_faces, session.fill(0).stats.new_faces);
 }
 
+TEST(Session, FillAllLeavesTheBorderOfAnOpenSurfaceUnlessItIsFilledOnItsOwn) {
+  Session session;
+  ASSERT_TRUE(session.open(std::filesystem::path(HOLEFILL_TEST_ASSETS) / "ragged_disk.obj"));
+  ASSERT_TRUE(session.is_border(0));
+  ASSERT_TRUE(session.fill_all());
+  EXPECT_EQ(session.fill(0).stage(), Stage::Original);
+  EXPECT_EQ(session.fill(1).stage(), Stage::Smoothed);
+  EXPECT_NE(session.notice().text.find("1 left open as borders"), std::string::npos)
+      << session.notice().text;
+  EXPECT_FALSE(session.fill_all_request());
+  session.select(0);
+  ASSERT_TRUE(session.fill_selected());
+  EXPECT_EQ(session.fill(0).stage(), Stage::Smoothed);
+}
+
 TEST(Session, SavesTheFilledMesh) {
   Session session = bunny_session();
   ASSERT_TRUE(session.fill_all());
