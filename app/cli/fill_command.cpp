@@ -92,6 +92,10 @@ bool write_results(const Mesh& mesh, const ReportInput& report, const FillArgume
                 << (a.report_path.empty() ? "" : ", nor the report") << "\n";
     return false;
   }
+  for (const auto& lost : mesh_output_losses(mesh, a)) {
+    streams.err << "holefill: " << a.output
+                << ": not written (the format cannot hold them): " << lost << "\n";
+  }
   if (a.report_path.empty()) return true;
   try {
     write_output(a.report_path, json_report(report), streams.out);

@@ -81,6 +81,10 @@ std::string mesh_output_bytes(const Mesh& mesh, const FillArguments& a) {
   return mesh_to_bytes(mesh, mesh_output_name(a));
 }
 
+std::vector<std::string> mesh_output_losses(const Mesh& mesh, const FillArguments& a) {
+  return attributes_not_written(mesh, mesh_output_name(a));
+}
+
 bool stdout_carries_a_file(const FillArguments& a) {
   return a.output == "-" || a.report_path == "-";
 }

@@ -22,6 +22,9 @@ void write_output(const std::string& path, const std::string& bytes, std::ostrea
 // The mesh's file in the format of -o's extension, or of --format for "-".
 std::string mesh_output_bytes(const Mesh& mesh, const FillArguments& arguments);
 
+// What that file leaves out of what the mesh carries (io.h: attributes_not_written).
+std::vector<std::string> mesh_output_losses(const Mesh& mesh, const FillArguments& arguments);
+
 // " (REASON)" for the last system call's error number, or "" when it is 0 (clear errno first).
 std::string last_system_error();
 

@@ -62,7 +62,9 @@ bool Session::save(const std::filesystem::path& path) {
   try {
     save_mesh(mesh_, path);
     saved_revision_ = revision_;
-    notice_ = {"Saved " + path.string(), false};
+    std::string lost;
+    for (const auto& kind : attributes_not_written(mesh_, path)) lost += "; not written: " + kind;
+    notice_ = {"Saved " + path.string() + lost, false};
     return true;
   } catch (const std::exception& error) {
     notice_ = {std::string("Could not save ") + error.what(), true};

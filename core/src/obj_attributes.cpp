@@ -124,15 +124,18 @@ void interpolate_texcoords(Mesh& mesh, const Patch& patch, const ObjHandles& obj
   set_patch_corners(mesh, patch, obj.texcoord, [&](VertexHandle v) { return number[v.idx()]; });
 }
 
-// Corner normals of the patch: a fixed vertex whose original corners share one normal keeps it;
-// other vertices get a new one, the mean of their faces' normals.
+// Corner normals of the patch: a fixed vertex whose original corners share one normal keeps it
+// (smooth shading goes on across the boundary); other vertices get a new one, the mean of the
+// normals of the patch's faces around them (a boundary vertex on a hard edge stays hard).
 void recompute_corner_normals(Mesh& mesh, const Patch& patch, const ObjHandles& obj,
                               const std::vector<VertexHandle>& fixed) {
   std::vector<int> number(mesh.n_vertices(), 0);
   ObjTables& tables = mesh.property(obj.tables);
   auto add_geometric_normal = [&](VertexHandle v) {
     Point sum(0.0, 0.0, 0.0);
-    for (const auto f : mesh.vf_range(v)) sum += mesh.calc_face_normal(f);
+    for (const auto f : mesh.vf_range(v)) {
+      if (face_stage(mesh, f) != Stage::Original) sum += mesh.calc_face_normal(f);
+    }
     const double length = sum.norm();
     tables.normals.push_back(length > 0.0 ? sum / length : sum);
     number[v.idx()] = static_cast<int>(tables.normals.size());

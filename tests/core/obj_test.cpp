@@ -378,6 +378,28 @@ TEST_F(ObjFiles, AUvSeamAcrossTheHoleLeavesThePatchWithoutUvsAndSaysSo) {
   EXPECT_EQ(all_face_values(again), all_face_values(mesh));
 }
 
+TEST_F(ObjFiles, SavingInAFormatThatCannotHoldTheAttributesSaysWhatIsLeftOut) {
+  const Mesh textured = load_mesh(write("box.obj", textured_box()));
+  EXPECT_TRUE(attributes_not_written(textured, "out.obj").empty());
+  for (const char* name : {"out.ply", "out.off", "out.STL"}) {
+    const auto lost = attributes_not_written(textured, name);
+    ASSERT_EQ(lost.size(), 1u) << name;
+    EXPECT_NE(lost[0].find("texture coordinates"), std::string::npos) << name;
+  }
+  const Mesh scan = load_mesh(
+      write("scan.ply",
+            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+            "property float quality\nelement face 1\nproperty list uchar int vertex_indices\n"
+            "property uchar flags\nend_header\n0 0 0 1 2 3 0.5\n1 0 0 1 2 3 0.5\n0 1 0 1 2 3 0.5\n"
+            "3 0 1 2 7\n"));
+  EXPECT_TRUE(attributes_not_written(scan, "out.ply").empty());
+  EXPECT_EQ(attributes_not_written(scan, "out.obj"),
+            (std::vector<std::string>{"vertex properties quality", "face properties flags"}));
+  EXPECT_EQ(attributes_not_written(scan, "out.off"),
+            (std::vector<std::string>{"vertex properties quality", "face properties flags"}));
+}
+
 // Real exporters' files (assimp's test models, BSD-3-clause; two are copied into tests/data, the
 // rest are read where the assimp-testmodels package is installed).
 TEST_F(ObjFiles, ExportersFilesLoadAndRoundTrip) {

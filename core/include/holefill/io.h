@@ -65,6 +65,12 @@ void save_mesh(const Mesh& mesh, const std::filesystem::path& path);
 // another extension.
 std::string mesh_to_bytes(const Mesh& mesh, const std::filesystem::path& name);
 
+// What save_mesh leaves out of a file of `name`'s format (by extension) that the mesh carries,
+// one phrase per kind (e.g. "vertex properties quality" for an OBJ, "texture coordinates, ..."
+// for a PLY of an OBJ's mesh); empty when the file holds everything. For callers to warn.
+std::vector<std::string> attributes_not_written(const Mesh& mesh,
+                                                const std::filesystem::path& name);
+
 // The file extensions load_mesh and save_mesh accept, lower case with the dot.
 const std::vector<std::string>& readable_extensions();
 const std::vector<std::string>& writable_extensions();

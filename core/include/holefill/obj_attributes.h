@@ -54,9 +54,10 @@ ObjHandles add_obj_handles(Mesh& mesh);
 // takes the material, group and object most original faces along the hole have; texture
 // coordinates are interpolated harmonically from the boundary's when the boundary lies in one
 // chart (each boundary vertex has one texture coordinate on all its original faces), otherwise
-// the patch has none; corner normals are the new geometry's (area-weighted face normals), a
-// boundary vertex whose original corners share one normal keeps it. Original elements are not
-// touched. Returns a note for the user when something could not be carried (empty otherwise).
+// the patch has none; corner normals are the new geometry's (the mean of the patch's face
+// normals around the vertex), a boundary vertex whose original corners share one normal keeps it.
+// Original elements are not touched. Returns a note for the user when something could not be
+// carried (empty otherwise).
 std::string interpolate_patch_obj_attributes(Mesh& mesh, const Patch& patch);
 
 }  // namespace holefill

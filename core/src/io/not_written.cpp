@@ -1,0 +1,64 @@
+// What a file format cannot hold of what the mesh carries (io.h: attributes_not_written), so that
+// saving says what it leaves out instead of dropping it silently.
+#include <algorithm>
+#include <array>
+
+#include "holefill/attributes.h"
+#include "holefill/io.h"
+#include "holefill/obj_attributes.h"
+
+namespace holefill {
+namespace {
+
+bool is_colour(const std::string& name) {
+  return name == "red" || name == "green" || name == "blue" || name == "alpha";
+}
+
+bool is_normal(const std::string& name) { return name == "nx" || name == "ny" || name == "nz"; }
+
+// Whether the OBJ tables or numbers hold anything.
+bool carries_obj_values(const Mesh& mesh) {
+  const ObjHandles obj = obj_handles(mesh);
+  if (!obj.valid()) return false;
+  const ObjTables& tables = mesh.property(obj.tables);
+  return !tables.texcoords.empty() || !tables.normals.empty() || !tables.materials.empty() ||
+         !tables.groups.empty() || !tables.objects.empty() || !tables.material_libraries.empty();
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> attributes_not_written(const Mesh& mesh,
+                                                const std::filesystem::path& name) {
+  std::string ext = name.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const AttributeLayout layout = attribute_layout(mesh);
+  const bool off_faces = std::all_of(layout.face.begin(), layout.face.end(),
+                                     [](const ScalarAttribute& a) { return is_colour(a.name); });
+  std::vector<std::string> vertex, face;
+  for (const auto& a : layout.vertex) {
+    const bool held = ext == ".ply" ||
+                      (ext == ".off" && (is_colour(a.name) || is_normal(a.name))) ||
+                      (ext == ".obj" && is_colour(a.name) && a.name != "alpha");
+    if (!held) vertex.push_back(a.name);
+  }
+  for (const auto& a : layout.face) {
+    if (!(ext == ".ply" || (ext == ".off" && off_faces))) face.push_back(a.name);
+  }
+  std::vector<std::string> lost;
+  if (!vertex.empty()) lost.push_back("vertex properties " + joined(vertex));
+  if (!face.empty()) lost.push_back("face properties " + joined(face));
+  if (ext != ".obj" && carries_obj_values(mesh)) {
+    lost.push_back(
+        "texture coordinates, corner normals, materials and groups (only OBJ holds them)");
+  }
+  return lost;
+}
+
+}  // namespace holefill
