@@ -36,6 +36,13 @@ bool start_change(Worker& worker, Session& session, const std::optional<LogChang
   return start_compute(worker, session, labels[static_cast<int>(change->kind)], *change);
 }
 
+bool start_comparison(Worker& worker, Session& session) {
+  const auto request = session.comparison_request();
+  if (!request || worker.busy()) return false;
+  return start_compute(worker, session, "Comparing on hole " + std::to_string(request->hole_id),
+                       *request);
+}
+
 bool start_options(Worker& worker, Session& session, const FillOptions& options) {
   if (worker.busy()) return false;
   if (!start_change(worker, session, session.options_request(options)))

@@ -24,6 +24,10 @@ bool start_change(Worker& worker, Session& session, const std::optional<LogChang
 // hole's steps on the worker. False when the worker is busy (nothing changes).
 bool start_options(Worker& worker, Session& session, const FillOptions& options);
 
+// Starts making the comparison the session asks for (Session::comparison_request); false when
+// none is asked for or the worker is busy.
+bool start_comparison(Worker& worker, Session& session);
+
 // Starts reading `path` into a new session; when done it replaces `session` and tells `files`
 // (opened), or, when the file cannot be read, leaves the session and shows why (notice).
 bool start_open(Worker& worker, Session& session, FileActions& files,

@@ -81,6 +81,7 @@ bool run_script(const hv::CommandLine& command, hv::Session& session) {
   session.set_compare_mode(command.compare_smoothing ? hv::CompareMode::Smoothing
                                                      : hv::CompareMode::Weights);
   session.set_compare(command.compare);
+  session.comparison();  // a script's screenshot shows it at once
   return true;
 }
 
@@ -244,6 +245,8 @@ int run(const hv::CommandLine& command, const char* executable) {
     if (files.quitting()) break;
     if (worker.poll()) {
       if (!worker.error().empty()) session.tell({worker.error(), true});
+      // A comparison cancelled (Esc) turns the comparison off rather than starting it again.
+      if (worker.cancelled() && session.comparison_request()) session.set_compare(false);
       // A mesh named on the command line that cannot be read ends the program, as it does
       // without a window.
       if (files.opened_path().empty()) {
@@ -252,6 +255,8 @@ int run(const hv::CommandLine& command, const char* executable) {
         break;
       }
     }
+    // The comparison is made on the worker too, whenever it is out of date and nothing runs.
+    if (!scripted) hv::start_comparison(worker, session);
     const hv::SceneArea area = scene_area(window);
     camera.set_viewport(area.size);
     hv::FrameKeys keys;

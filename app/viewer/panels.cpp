@@ -315,10 +315,11 @@ void comparison_section(Session& session, Worker& worker, const UiState& ui) {
       session.set_compare_triangulation_only(triangulation_only);
     }
   }
-  const Comparison* comparison = session.comparison();
+  const Comparison* comparison = session.shown_comparison();
   if (!compare) return;
   if (!comparison) {
-    ImGui::TextDisabled("Select a hole to compare.");
+    ImGui::TextDisabled(session.selected() < 0 ? "Select a hole to compare."
+                                               : "Making the comparison...");
     return;
   }
   if (ImGui::BeginTable("compare", 2, ImGuiTableFlags_BordersInnerV)) {
@@ -380,7 +381,7 @@ void display_section(UiState& ui) {
 }  // namespace
 
 void draw_comparison_labels(Session& session, float left, float right, float top) {
-  const Comparison* comparison = session.comparison();
+  const Comparison* comparison = session.shown_comparison();
   if (!comparison) return;
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const float half = 0.5f * (right - left);

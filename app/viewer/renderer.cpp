@@ -57,7 +57,7 @@ void Renderer::sync(Session& session) {
     upload(main_, session.mesh(), session, fills);
     main_.version = session.mesh_version();
   }
-  if (const Comparison* comparison = session.comparison();
+  if (const Comparison* comparison = session.shown_comparison();
       comparison && left_.version != session.comparison_version()) {
     upload(left_, comparison->left.mesh, session, {&comparison->left.fill});
     upload(right_, comparison->right.mesh, session, {&comparison->right.fill});
@@ -72,7 +72,7 @@ void Renderer::render(Session& session, const Camera& camera, const PixelRect& s
   glViewport(0, 0, framebuffer_width, framebuffer_height);
   clear_rect({0, 0, framebuffer_width, framebuffer_height}, framebuffer_height,
              palette::kBackground);
-  if (session.comparison()) {
+  if (session.shown_comparison()) {
     clear_rect(scene, framebuffer_height, palette::kDivider);
     const auto [left, right] = comparison_halves(scene);
     Camera half = camera;

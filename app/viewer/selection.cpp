@@ -89,7 +89,7 @@ std::vector<int> Session::default_joined(int hole_id) const {
 }
 
 void Session::selection_changed() {
-  comparison_stale_ = true;
+  ++comparison_wanted_;
   bridge_problem_.clear();
   if (selected_ < 0 || joined_.size() != 1) {
     bridge_problem_ = "Select two loops to bridge: click one, shift-click the other.";

@@ -250,8 +250,7 @@ std::optional<LogChange> Session::options_request(const FillOptions& options) co
 }
 
 std::optional<LogChange> Session::keep_request(bool right) const {
-  if (!compare_ || !comparison_ || comparison_stale_ || comparison_->hole_id != selected_)
-    return std::nullopt;
+  if (!shown_comparison() || comparison_made_ != comparison_wanted_) return std::nullopt;
   FillOptions options = (right ? comparison_->right : comparison_->left).options;
   const Stage last = options.last_stage;
   options.last_stage = options_.last_stage;
@@ -309,33 +308,54 @@ const std::map<int, std::size_t>& Session::mesh_valences() {
 
 void Session::set_compare(bool on) {
   compare_ = on;
-  comparison_stale_ = true;
+  ++comparison_wanted_;
 }
 
 void Session::set_compare_triangulation_only(bool on) {
   if (on == compare_triangulation_only_) return;
   compare_triangulation_only_ = on;
-  comparison_stale_ = true;
+  ++comparison_wanted_;
 }
 
 void Session::set_compare_mode(CompareMode mode) {
   if (mode == compare_mode_) return;
   compare_mode_ = mode;
-  comparison_stale_ = true;
+  ++comparison_wanted_;
+}
+
+std::optional<ComparisonRequest> Session::comparison_request() const {
+  if (!compare_ || selected_ < 0 || comparison_made_ == comparison_wanted_) return std::nullopt;
+  return ComparisonRequest{selected_, options_, compare_mode_, compare_triangulation_only_,
+                           comparison_wanted_};
+}
+
+std::optional<ComparisonResult> Session::compute(const ComparisonRequest& request,
+                                                 Progress* progress) const {
+  // The hole as it is before its own steps: the log without them (kept, usually).
+  const auto before = rebuild(loaded_, holes_, without_hole(log_, request.hole_id), request.hole_id,
+                              checkpoints_, progress);
+  if (!before || (progress && progress->cancelled())) return std::nullopt;
+  return ComparisonResult{
+      make_comparison(before->state.mesh, holes_[request.hole_id], request.options, request.mode,
+                      request.triangulation_only),
+      request.generation};
+}
+
+void Session::apply(ComparisonResult result) {
+  comparison_ = std::move(result.comparison);
+  comparison_made_ = result.generation;
+  comparison_version_ = next_serial();
+}
+
+const Comparison* Session::shown_comparison() const {
+  if (!compare_ || selected_ < 0 || !comparison_ || comparison_->hole_id != selected_)
+    return nullptr;
+  return &*comparison_;
 }
 
 const Comparison* Session::comparison() {
-  if (!compare_ || selected_ < 0) return nullptr;
-  if (comparison_stale_ || !comparison_) {
-    // The hole as it is before its own steps: the log without them (kept, usually).
-    const auto before =
-        rebuild(loaded_, holes_, without_hole(log_, selected_), selected_, checkpoints_, nullptr);
-    comparison_ = make_comparison(before->state.mesh, holes_[selected_], options_, compare_mode_,
-                                  compare_triangulation_only_);
-    comparison_stale_ = false;
-    comparison_version_ = next_serial();
-  }
-  return &*comparison_;
+  if (const auto request = comparison_request()) apply(*compute(*request));
+  return shown_comparison();
 }
 
 void Session::remember() {
@@ -365,7 +385,7 @@ void Session::changed() {
   // Versions are unique across sessions, so a renderer that drew one session notices when
   // another (a mesh opened on the worker) takes its place.
   mesh_version_ = next_serial();
-  comparison_stale_ = true;
+  ++comparison_wanted_;
 }
 
 }  // namespace holefill::viewer

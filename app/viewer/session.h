@@ -72,6 +72,20 @@ struct ChangeResult {
   Rebuilt rebuilt;
 };
 
+// A comparison to make (Session::comparison_request), and what it made.
+struct ComparisonRequest {
+  int hole_id = -1;
+  FillOptions options;
+  CompareMode mode = CompareMode::Weights;
+  bool triangulation_only = false;
+  std::uint64_t generation = 0;
+};
+
+struct ComparisonResult {
+  Comparison comparison;
+  std::uint64_t generation = 0;
+};
+
 class Session {
  public:
   // Opens a mesh file. On failure the current mesh stays and notice() says why.
@@ -191,8 +205,19 @@ class Session {
   void set_compare_mode(CompareMode mode);
   CompareMode compare_mode() const { return compare_mode_; }
   bool compare_triangulation_only() const { return compare_triangulation_only_; }
-  // Nothing when comparison is off or no hole is selected.
+  // Nothing when comparison is off or no hole is selected. Computes it here when out of date
+  // (scripts, tests); the window computes it on the worker instead (comparison_request).
   const Comparison* comparison();
+  // The comparison to compute, when it shows and is out of date; compute() makes it (reading
+  // the session only) and apply() shows it, unless something changed meanwhile (then another
+  // request follows).
+  std::optional<ComparisonRequest> comparison_request() const;
+  std::optional<ComparisonResult> compute(const ComparisonRequest& request,
+                                          Progress* progress = nullptr) const;
+  void apply(ComparisonResult result);
+  // The last comparison made for the selected hole, possibly out of date; nothing when
+  // comparison is off, no hole is selected or none was made for it yet.
+  const Comparison* shown_comparison() const;
   std::uint64_t comparison_version() const { return comparison_version_; }
 
  private:
@@ -241,7 +266,10 @@ class Session {
   bool compare_ = false;
   bool compare_triangulation_only_ = false;
   CompareMode compare_mode_ = CompareMode::Weights;
-  bool comparison_stale_ = true;
+  // Each change the comparison depends on asks for a new one; comparison_ was made for the
+  // request `comparison_made_`.
+  std::uint64_t comparison_wanted_ = 1;
+  std::uint64_t comparison_made_ = 0;
   std::optional<Comparison> comparison_;
   std::uint64_t comparison_version_ = 0;
 };

@@ -34,6 +34,8 @@ class Worker {
   // next check; busy() stays true until then.
   void cancel();
   bool cancelling() const { return busy() && progress_ && progress_->cancelled(); }
+  // Whether the last job was cancelled (its result dropped).
+  bool cancelled() const { return progress_ && progress_->cancelled(); }
 
   // On the frame loop's thread, every frame: when the job has ended, runs its finishing step
   // (unless cancelled) and returns true. An exception the job threw becomes error().

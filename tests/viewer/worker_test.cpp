@@ -153,6 +153,32 @@ TEST(Background, OptionsWithNothingToRerunApplyAtOnce) {
   EXPECT_EQ(session.options().smooth.iterations, 4);
 }
 
+TEST(Background, TheComparisonIsMadeOnTheWorkerAndAChangeMeanwhileAsksAgain) {
+  Session session = bunny_session();
+  session.select(0);
+  session.set_compare(true);
+  EXPECT_EQ(session.shown_comparison(), nullptr);
+  Worker worker;
+  ASSERT_TRUE(start_comparison(worker, session));
+  wait(worker);
+  const Comparison* made = session.shown_comparison();
+  ASSERT_NE(made, nullptr);
+  EXPECT_FALSE(session.comparison_request());
+  Session direct = bunny_session();
+  direct.select(0);
+  direct.set_compare(true);
+  ASSERT_NE(direct.comparison(), nullptr);
+  EXPECT_TRUE(same_mesh(made->left.mesh, direct.comparison()->left.mesh));
+  EXPECT_TRUE(same_mesh(made->right.mesh, direct.comparison()->right.mesh));
+
+  session.set_compare_mode(CompareMode::Smoothing);
+  ASSERT_TRUE(start_comparison(worker, session));
+  session.select(1);  // while it is made for hole 0
+  wait(worker);
+  EXPECT_EQ(session.shown_comparison(), nullptr);
+  EXPECT_TRUE(session.comparison_request());
+}
+
 TEST(Background, OpeningOnTheWorkerReplacesTheSessionWhenRead) {
   Session session;
   FileActions files(session);
