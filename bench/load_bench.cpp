@@ -1,4 +1,4 @@
-// Loading a 1M-face mesh (issue 12): a 708 x 708 height field (999,698 triangles) as a plain
+// Loading a 1M-face mesh: a 708 x 708 height field (999,698 triangles) as a plain
 // OBJ, a textured OBJ (vt, vn and a material per corner and face) and a binary PLY, generated
 // here in memory, each read by load_mesh_from_memory (parse, repairs, mesh). Coordinates are
 // written as the shortest text of a float, as exporters do.

@@ -1,4 +1,4 @@
-// Attributes a file carries survive loading, filling and saving (issue 12): originals keep their
+// Attributes a file carries survive loading, filling and saving: originals keep their
 // values bit for bit, new vertices get values from the boundary, and each format writes back what
 // it can hold, PLY in its own encoding and types.
 #include "holefill/attributes.h"

@@ -1,4 +1,4 @@
-// OBJ through tinyobjloader (issue 12): numbers read exactly, every malformed statement refused
+// OBJ through tinyobjloader: numbers read exactly, every malformed statement refused
 // with its line, statements holefill drops named in a warning; texture coordinates, normals,
 // materials, groups and material libraries kept bit for bit through load, fill and save, and
 // given to patches where they can be.
