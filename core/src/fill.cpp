@@ -35,18 +35,19 @@ std::size_t count_intersections(const Mesh& mesh, const Patch& patch,
 }
 
 // ---- The stages ---------------------------------------------------------------------------------
+// Each runs one stage on fill.patch and keeps it only when it made no degenerate triangle and no
+// new intersection; advance_with alone moves the patch's stage on.
 
 // The smoothing stage: the paper's umbrella operator, or fairing with umbrella as the fallback.
 void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options) {
   if (options.method == SmoothMethod::Fair) {
     const FairResult result = fair_patch(mesh, fill.patch, options.fair);
-    if (result.solved) {
-      fill.patch.stage = Stage::Smoothed;
-      return;
-    }
+    if (result.solved) return;
     fill.smoothing_note = "fairing fell back to umbrella smoothing: " + result.problem;
   }
-  smooth_patch(mesh, fill.patch, options);
+  SmoothOptions umbrella = options;
+  umbrella.method = SmoothMethod::Umbrella;
+  smooth_patch(mesh, fill.patch, umbrella);
 }
 
 // Why a finished stage must be undone: it made a degenerate triangle, or it made a patch that
@@ -63,6 +64,100 @@ std::string stage_problem(const Mesh& mesh, const HoleFill& fill, const detail::
   return {};
 }
 
+// Plans the hole's triangulation (or takes `plan`), steers it clear of the mesh when asked, and
+// adds it. False, with fill.failure saying why, when no triangulation could be added.
+bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options,
+                       const PlannedTriangulation* plan, const detail::FaceGrid* index) {
+  PlannedTriangulation planned;
+  fill.times.triangulate_seconds += timed(
+      [&] { planned = plan ? *plan : plan_triangulation(mesh, hole, options.triangulate); });
+  if (options.avoid_intersections) {
+    fill.times.avoid_seconds = timed([&] {
+      planned = detail::avoid_intersections(mesh, hole, std::move(planned), options.triangulate,
+                                            index, fill.avoidance, fill.self_intersections);
+    });
+  }
+  TriangulateHoleResult result = apply_triangulation(mesh, hole, planned);
+  if (!result.patch) {
+    fill.failure = result.failure;
+    return false;
+  }
+  fill.patch = std::move(*result.patch);
+  if (!options.avoid_intersections) {
+    fill.times.check_seconds +=
+        timed([&] { fill.self_intersections = count_intersections(mesh, fill.patch, index); });
+  }
+  return true;
+}
+
+// Refines the patch; a refinement with remeshing that must be undone is tried again without the
+// remeshing, and one that still fails is undone (the patch stays as triangulated).
+void refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
+                  const detail::FaceGrid* index) {
+  const detail::StageUndo undo(mesh, fill.patch);
+  std::size_t intersections = 0;
+  fill.times.refine_seconds = 0.0;
+  auto refine_and_check = [&](const RefineOptions& refine) {
+    std::string problem;
+    fill.times.refine_seconds += timed([&] {
+      try {
+        fill.refinement = refine_patch(mesh, fill.patch, refine);
+      } catch (const std::bad_alloc&) {
+        problem = "not enough memory";
+      }
+    });
+    if (problem.empty()) {
+      fill.times.check_seconds +=
+          timed([&] { problem = stage_problem(mesh, fill, index, intersections); });
+    }
+    return problem;
+  };
+  std::string problem = refine_and_check(options.refine);
+  if (!problem.empty() && options.refine.remesh) {
+    // The paper's refinement alone may be fine where the remeshing on top of it was not.
+    undo.undo(mesh, fill.patch);
+    RefineOptions without_remesh = options.refine;
+    without_remesh.remesh = false;
+    const std::string remesh_problem = problem;
+    problem = refine_and_check(without_remesh);
+    if (problem.empty()) fill.refinement_note = "remeshing undone: " + remesh_problem;
+  }
+  if (!problem.empty()) {
+    undo.undo(mesh, fill.patch);
+    fill.refinement = RefineResult{};
+    fill.refinement_note = "refinement undone: " + problem;
+    return;
+  }
+  fill.self_intersections = intersections;
+  if (fill.refinement.stopped_at_vertex_cap) {
+    fill.refinement_note = "refinement stopped at its cap of " +
+                           std::to_string(fill.refinement.vertex_cap) + " new vertices (" +
+                           std::to_string(std::lround(options.refine.max_density)) +
+                           " times what the boundary's density asks for)";
+  }
+}
+
+// Smooths the patch; a smoothing that must be undone puts the new vertices back where they were.
+void smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
+                  const detail::FaceGrid* index) {
+  std::vector<Point> positions;
+  for (const auto v : fill.patch.new_vertices) positions.push_back(mesh.point(v));
+  std::string problem;
+  std::size_t intersections = 0;
+  fill.times.smooth_seconds = timed([&] { smooth(mesh, fill, options.smooth); });
+  fill.times.check_seconds +=
+      timed([&] { problem = stage_problem(mesh, fill, index, intersections); });
+  if (problem.empty()) {
+    fill.self_intersections = intersections;
+    return;
+  }
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    mesh.set_point(fill.patch.new_vertices[i], positions[i]);
+  }
+  fill.smoothing_note +=
+      (fill.smoothing_note.empty() ? "" : "; ") + std::string("smoothing undone: ") + problem;
+}
+
 // advance(), with the triangulation already planned when `plan` is given, and the faces outside
 // the patch indexed when `index` is.
 bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options,
@@ -71,93 +166,18 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
   fill.boundary_edges = hole.size();
   if (fill.failed()) return false;
   switch (fill.stage()) {
-    case Stage::Original: {
-      PlannedTriangulation planned;
-      fill.times.triangulate_seconds += timed(
-          [&] { planned = plan ? *plan : plan_triangulation(mesh, hole, options.triangulate); });
-      if (options.avoid_intersections) {
-        fill.times.avoid_seconds = timed([&] {
-          planned = detail::avoid_intersections(mesh, hole, std::move(planned), options.triangulate,
-                                                index, fill.avoidance, fill.self_intersections);
-        });
-      }
-      TriangulateHoleResult result = apply_triangulation(mesh, hole, planned);
-      if (!result.patch) {
-        fill.failure = result.failure;
-        return false;
-      }
-      fill.patch = std::move(*result.patch);
-      if (!options.avoid_intersections) {
-        fill.times.check_seconds +=
-            timed([&] { fill.self_intersections = count_intersections(mesh, fill.patch, index); });
-      }
+    case Stage::Original:
+      // The patch is born Stage::Triangulated.
+      if (!triangulate_stage(mesh, hole, fill, options, plan, index)) return false;
       break;
-    }
-    case Stage::Triangulated: {
-      const detail::StageUndo undo(mesh, fill.patch);
-      std::size_t intersections = 0;
-      fill.times.refine_seconds = 0.0;
-      auto refine_and_check = [&](const RefineOptions& refine) {
-        std::string problem;
-        fill.times.refine_seconds += timed([&] {
-          try {
-            fill.refinement = refine_patch(mesh, fill.patch, refine);
-          } catch (const std::bad_alloc&) {
-            problem = "not enough memory";
-          }
-        });
-        if (problem.empty()) {
-          fill.times.check_seconds +=
-              timed([&] { problem = stage_problem(mesh, fill, index, intersections); });
-        }
-        return problem;
-      };
-      std::string problem = refine_and_check(options.refine);
-      if (!problem.empty() && options.refine.remesh) {
-        // The paper's refinement alone may be fine where the remeshing on top of it was not.
-        undo.undo(mesh, fill.patch);
-        RefineOptions without_remesh = options.refine;
-        without_remesh.remesh = false;
-        const std::string remesh_problem = problem;
-        problem = refine_and_check(without_remesh);
-        if (problem.empty()) fill.refinement_note = "remeshing undone: " + remesh_problem;
-      }
-      if (!problem.empty()) {
-        undo.undo(mesh, fill.patch);
-        fill.refinement = RefineResult{};
-        fill.refinement_note = "refinement undone: " + problem;
-      } else {
-        fill.self_intersections = intersections;
-        if (fill.refinement.stopped_at_vertex_cap) {
-          fill.refinement_note = "refinement stopped at its cap of " +
-                                 std::to_string(fill.refinement.vertex_cap) + " new vertices (" +
-                                 std::to_string(std::lround(options.refine.max_density)) +
-                                 " times what the boundary's density asks for)";
-        }
-      }
+    case Stage::Triangulated:
+      refine_stage(mesh, fill, options, index);
       fill.patch.stage = Stage::Refined;
       break;
-    }
-    case Stage::Refined: {
-      std::vector<Point> positions;
-      for (const auto v : fill.patch.new_vertices) positions.push_back(mesh.point(v));
-      std::string problem;
-      std::size_t intersections = 0;
-      fill.times.smooth_seconds = timed([&] { smooth(mesh, fill, options.smooth); });
-      fill.times.check_seconds +=
-          timed([&] { problem = stage_problem(mesh, fill, index, intersections); });
-      if (!problem.empty()) {
-        for (std::size_t i = 0; i < positions.size(); ++i) {
-          mesh.set_point(fill.patch.new_vertices[i], positions[i]);
-        }
-        fill.smoothing_note +=
-            (fill.smoothing_note.empty() ? "" : "; ") + std::string("smoothing undone: ") + problem;
-      } else {
-        fill.self_intersections = intersections;
-      }
+    case Stage::Refined:
+      smooth_stage(mesh, fill, options, index);
       fill.patch.stage = Stage::Smoothed;
       break;
-    }
     case Stage::Smoothed:
       return false;
   }

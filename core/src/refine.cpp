@@ -150,7 +150,6 @@ RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options
     if (result.stopped_at_vertex_cap) break;
   }
   if (options.remesh) result.remeshing = remesh_patch(mesh, patch, options.remeshing);
-  patch.stage = Stage::Refined;
   return result;
 }
 

@@ -1,5 +1,6 @@
 #include "holefill/smooth.h"
 
+#include <stdexcept>
 #include <vector>
 
 namespace holefill {
@@ -60,7 +61,11 @@ class DenseIndex {
 
 }  // namespace
 
-void smooth_patch(Mesh& mesh, Patch& patch, const SmoothOptions& options) {
+void smooth_patch(Mesh& mesh, const Patch& patch, const SmoothOptions& options) {
+  if (options.method != SmoothMethod::Umbrella) {
+    throw std::invalid_argument(
+        "smooth_patch smooths with the umbrella operator only (fairing: fair_patch)");
+  }
   // The patch's vertices and their neighbours copied once into flat arrays (neighbours in the
   // mesh's circulation order, so the sums are the same as over the mesh), so that the iterations
   // touch no half-edge structure: linear in the patch size with a small constant.
@@ -94,7 +99,6 @@ void smooth_patch(Mesh& mesh, Patch& patch, const SmoothOptions& options) {
   for (std::size_t i = 0; i < moving; ++i) {
     mesh.set_point(patch.new_vertices[i], position[own_index[i]]);
   }
-  patch.stage = Stage::Smoothed;
 }
 
 double umbrella_energy(const Mesh& mesh, const Patch& patch) {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 #include "holefill/holes.h"
 #include "holefill/patch.h"
@@ -313,6 +314,19 @@ TEST(Smooth, AVertexListedTwiceMovesOnce) {
   smooth_patch(mesh, fill.patch);
   smooth_patch(twice, doubled);
   for (const auto v : mesh.vertices()) EXPECT_EQ(mesh.point(v), twice.point(v)) << v.idx();
+}
+
+// smooth_patch is the umbrella operator: asked for fairing it refuses, the mesh untouched, instead
+// of smoothing another way than asked; the stage is the pipeline's to advance.
+TEST(Smooth, AskedForFairingItRefusesAndLeavesTheStage) {
+  auto [before, mesh, fill] = refined_sphere();
+  const Mesh untouched = mesh;
+  SmoothOptions fairing;
+  fairing.method = SmoothMethod::Fair;
+  EXPECT_THROW(smooth_patch(mesh, fill.patch, fairing), std::invalid_argument);
+  for (const auto v : mesh.vertices()) EXPECT_EQ(mesh.point(v), untouched.point(v)) << v.idx();
+  smooth_patch(mesh, fill.patch);
+  EXPECT_EQ(fill.patch.stage, Stage::Refined);
 }
 
 }  // namespace

@@ -44,7 +44,8 @@ struct RefineResult {
 void assign_boundary_scales(Mesh& mesh, const Patch& patch);
 
 // Refines the patch in place: adds vertices and faces (tagged Stage::Refined) and records them
-// in `patch`. Vertices and faces outside the patch are never changed.
+// in `patch`. Vertices and faces outside the patch are never changed; patch.stage is left to the
+// pipeline (fill.h).
 RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options = {});
 
 // Swaps interior patch edges until none should be swapped; returns the number of swaps.

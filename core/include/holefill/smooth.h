@@ -19,7 +19,12 @@ struct SmoothOptions {
   bool operator==(const SmoothOptions&) const = default;
 };
 
-void smooth_patch(Mesh& mesh, Patch& patch, const SmoothOptions& options = {});
+// Moves the patch's new vertices by `options.iterations` umbrella steps of `options.step`; the
+// boundary and the original mesh never move, and patch.stage is left to the pipeline (fill.h).
+// Umbrella smoothing only: asking for fairing here (options.method == Fair) throws
+// std::invalid_argument rather than smoothing some other way; fairing is fair_patch, which can
+// fail, and the pipeline falls back to this when it does.
+void smooth_patch(Mesh& mesh, const Patch& patch, const SmoothOptions& options = {});
 
 // Sum over the patch's own vertices of |U(P)|^2: what umbrella smoothing drives down.
 double umbrella_energy(const Mesh& mesh, const Patch& patch);
