@@ -1,10 +1,12 @@
 // Running out of memory: a clear message, its own exit code, no output, wherever it happens.
+#include <chrono>
 #include <iostream>
 #include <thread>
 
 #include "failing_allocator.h"
 #include "holefill/fill.h"
 #include "holefill/holes.h"
+#include "holefill/progress.h"
 #include "robust_test_util.h"
 #include "test_meshes.h"
 
@@ -24,11 +26,20 @@ TEST(OutOfMemory, InAWorkerThreadReachesTheCallerWithTheMeshUnchanged) {
   const auto holes = find_holes(mesh);
   ASSERT_GE(holes.size(), 50u);
   const std::size_t faces = mesh.n_faces();
+  // This thread plans holes too: left alone on a busy machine it could plan them all before the
+  // other thread ran. Its first report waits (up to 20 s) until an allocation off it has failed.
+  Progress wait_for_a_worker([main = std::this_thread::get_id()](double) {
+    for (int waited = 0; std::this_thread::get_id() == main &&
+                         testing::failed_allocations() == 0 && waited < 20'000;
+         ++waited) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  });
   EXPECT_EXIT(
       {
         testing::fail_allocations_off_this_thread();
         try {
-          fill_holes(mesh, holes, FillOptions{});
+          fill_holes(mesh, holes, FillOptions{}, {}, &wait_for_a_worker);
         } catch (const std::bad_alloc&) {
           testing::stop_failing_allocations();
           std::_Exit(mesh.n_faces() == faces ? kCaughtBadAlloc : 1);

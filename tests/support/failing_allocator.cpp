@@ -10,11 +10,13 @@ namespace {
 
 std::atomic<bool> fail_off_thread{false};
 std::atomic<std::size_t> largest_allowed{std::numeric_limits<std::size_t>::max()};
+std::atomic<std::size_t> failures{0};
 thread_local bool is_allowed_thread = false;
 
 void* allocate(std::size_t size) {
   if (size > largest_allowed.load(std::memory_order_relaxed) ||
       (fail_off_thread.load(std::memory_order_relaxed) && !is_allowed_thread)) {
+    failures.fetch_add(1, std::memory_order_relaxed);
     throw std::bad_alloc();
   }
   if (void* block = std::malloc(size == 0 ? 1 : size)) return block;
@@ -29,6 +31,8 @@ void fail_allocations_off_this_thread() {
 }
 
 void fail_allocations_larger_than(std::size_t bytes) { largest_allowed = bytes; }
+
+std::size_t failed_allocations() { return failures.load(std::memory_order_relaxed); }
 
 void stop_failing_allocations() {
   fail_off_thread = false;

@@ -14,6 +14,8 @@ void fail_allocations_off_this_thread();
 // From now on, allocations of more than `bytes` fail, on every thread.
 void fail_allocations_larger_than(std::size_t bytes);
 
+// How many allocations have been made to fail so far, on every thread.
+std::size_t failed_allocations();
 // Allocations succeed again.
 void stop_failing_allocations();
 
