@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "patch_values.h"
+#include "property_handles.h"
 
 namespace holefill {
 namespace {
@@ -15,11 +16,6 @@ constexpr const char* kNormal = "holefill:obj:normal";
 constexpr const char* kMaterial = "holefill:obj:material";
 constexpr const char* kGroup = "holefill:obj:group";
 constexpr const char* kObject = "holefill:obj:object";
-
-template <class Handle>
-void find_or_add(Mesh& mesh, Handle& handle, const char* name) {
-  if (!mesh.get_property_handle(handle, name)) mesh.add_property(handle, name);
-}
 
 // The vertices of the patch's faces that the patch did not add (the hole's loops): their
 // values are fixed.
@@ -179,12 +175,12 @@ ObjHandles obj_handles(const Mesh& mesh) {
 
 ObjHandles add_obj_handles(Mesh& mesh) {
   ObjHandles obj;
-  find_or_add(mesh, obj.tables, kTables);
-  find_or_add(mesh, obj.texcoord, kTexcoord);
-  find_or_add(mesh, obj.normal, kNormal);
-  find_or_add(mesh, obj.material, kMaterial);
-  find_or_add(mesh, obj.group, kGroup);
-  find_or_add(mesh, obj.object, kObject);
+  detail::find_or_add_property(mesh, obj.tables, kTables);
+  detail::find_or_add_property(mesh, obj.texcoord, kTexcoord);
+  detail::find_or_add_property(mesh, obj.normal, kNormal);
+  detail::find_or_add_property(mesh, obj.material, kMaterial);
+  detail::find_or_add_property(mesh, obj.group, kGroup);
+  detail::find_or_add_property(mesh, obj.object, kObject);
   return obj;
 }
 

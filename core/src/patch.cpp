@@ -3,17 +3,13 @@
 #include <cmath>
 
 #include "geometry.h"
+#include "property_handles.h"
 
 namespace holefill {
 namespace {
 constexpr const char* kFaceStage = "holefill:face_stage";
 constexpr const char* kVertexStage = "holefill:vertex_stage";
 constexpr const char* kScale = "holefill:scale";
-
-template <class Handle>
-void find_or_add(Mesh& mesh, Handle& handle, const char* name) {
-  if (!mesh.get_property_handle(handle, name)) mesh.add_property(handle, name);
-}
 
 // Whether the angles at c and d opposite edge a-b clearly sum to at most pi, without atan2: for
 // angles in (0, pi), alpha + beta <= pi exactly when cot(alpha) + cot(beta) >= 0. The margin
@@ -42,9 +38,9 @@ const char* to_string(Stage stage) {
 }
 
 PatchTags::PatchTags(Mesh& mesh) {
-  find_or_add(mesh, face_stage, kFaceStage);
-  find_or_add(mesh, vertex_stage, kVertexStage);
-  find_or_add(mesh, scale, kScale);
+  detail::find_or_add_property(mesh, face_stage, kFaceStage);
+  detail::find_or_add_property(mesh, vertex_stage, kVertexStage);
+  detail::find_or_add_property(mesh, scale, kScale);
 }
 
 Stage face_stage(const Mesh& mesh, FaceHandle face) {
