@@ -1,10 +1,16 @@
 #include "command_line.h"
 
-#include <sstream>
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
 #include <stdexcept>
+
+#include "holefill/version.h"
 
 namespace holefill::viewer {
 namespace {
+
+constexpr const char* kScripted = "Scripted mode (for automation and documentation)";
 
 Stage parse_stage(const std::string& name) {
   if (name == "triangulate") return Stage::Triangulated;
@@ -13,133 +19,148 @@ Stage parse_stage(const std::string& name) {
   throw std::invalid_argument("unknown stage '" + name + "' (triangulate, refine or smooth)");
 }
 
-int parse_int(const std::string& text, const std::string& option) {
-  std::size_t used = 0;
-  int value = 0;
+// What the command line sets once parsed, before it is checked and turned into a CommandLine.
+struct Parsed {
+  CommandLine command;
+  std::vector<std::string> stages;
+  std::string size;
+};
+
+// The viewer's options, writing into `parsed`. Defaults shown in the help come from CommandLine.
+void add_options(CLI::App& app, Parsed& parsed) {
+  CommandLine& c = parsed.command;
+  app.set_version_flag("--version", "holefill-viewer " HOLEFILL_VERSION);
+  app.add_option("MESH", c.mesh, "the mesh to open (default: the bundled bunny)");
+  app.add_option("--select-hole", c.select_hole, "select hole K (0 is the largest) with its islands")
+      ->type_name("K")
+      ->group(kScripted);
+  app.add_option("--add-hole", c.add_holes,
+                 "add loop K to the selection, as shift-click does\n(repeatable; two loops: --run "
+                 "bridges them)")
+      ->type_name("K")
+      ->allow_extra_args(false)
+      ->group(kScripted);
+  app.add_option("--run", parsed.stages, "run these stages on the selected hole, in order")
+      ->type_name("triangulate,refine,smooth")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->group(kScripted);
+  app.add_flag("--fill-all", c.fill_all, "fill every hole")->group(kScripted);
+  app.add_flag("--remesh", c.remesh, "refine with the remeshing pass (toward valence 6)")
+      ->group(kScripted);
+  app.add_flag("--fair", c.fair, "smooth by fairing instead of the umbrella operator")
+      ->group(kScripted);
+  app.add_option("--fair-order", c.fair_order, "fairing's order (implies --fair)")
+      ->check(CLI::IsMember({2, 3}))
+      ->capture_default_str()
+      ->group(kScripted);
+  app.add_flag("--compare", c.compare, "show liepa (left) vs maxmin (right) on the hole")
+      ->group(kScripted);
+  app.add_flag("--compare-triangulation-only", c.compare_triangulation_only,
+               "compare the triangulation stage only")
+      ->group(kScripted);
+  app.add_flag("--compare-smoothing", c.compare_smoothing,
+               "show umbrella (left) vs fair (right) instead")
+      ->group(kScripted);
+  app.add_option("--size", parsed.size, "window size")
+      ->type_name("WxH")
+      ->default_str(std::to_string(c.width) + "x" + std::to_string(c.height))
+      ->group(kScripted);
+  app.add_option("--save", c.save,
+                 "after the above, save the mesh (.obj .off .ply .stl)\nand exit, with no window "
+                 "unless --screenshot")
+      ->type_name("OUT")
+      ->group(kScripted);
+  app.add_option("--screenshot", c.screenshot, "render, save the window as PNG and exit")
+      ->type_name("OUT.png")
+      ->group(kScripted);
+  app.add_option("--frames", c.frames,
+                 "with --screenshot: render N frames (turning the view\na little each) and print "
+                 "the mean frame time")
+      ->type_name("N")
+      ->check(CLI::Range(4, 1'000'000))
+      ->group(kScripted);
+}
+
+// "WxH" as a window size, at least 64 pixels each way.
+void parse_size(const std::string& size, CommandLine& c) {
+  const auto x = size.find('x');
+  std::size_t used_w = 0, used_h = 0;
   try {
-    value = std::stoi(text, &used);
+    if (x == std::string::npos) throw std::invalid_argument(size);
+    c.width = std::stoi(size.substr(0, x), &used_w);
+    c.height = std::stoi(size.substr(x + 1), &used_h);
   } catch (const std::exception&) {
-    used = 0;
+    used_w = 0;
   }
-  if (used != text.size())
-    throw std::invalid_argument(option + " needs a number, got '" + text + "'");
-  return value;
+  if (x == std::string::npos || used_w != x || used_h != size.size() - x - 1) {
+    throw std::invalid_argument("--size needs WxH, got '" + size + "'");
+  }
+  if (c.width < 64 || c.height < 64) throw std::invalid_argument("--size is too small");
+}
+
+// The options that imply others, and the combinations scripted mode cannot run.
+void complete_and_check(const CLI::App& app, Parsed& parsed) {
+  CommandLine& c = parsed.command;
+  for (const auto& name : parsed.stages) c.run.push_back(parse_stage(name));
+  if (!parsed.size.empty()) parse_size(parsed.size, c);
+  c.fair = c.fair || app.count("--fair-order") > 0;
+  c.compare = c.compare || c.compare_triangulation_only || c.compare_smoothing;
+  c.report_frame_time = app.count("--frames") > 0;
+  if (!c.run.empty() && !c.select_hole) throw std::invalid_argument("--run needs --select-hole");
+  if (c.report_frame_time && c.screenshot.empty()) {
+    throw std::invalid_argument("--frames needs --screenshot");
+  }
+  if (!c.add_holes.empty() && !c.select_hole) {
+    throw std::invalid_argument("--add-hole needs --select-hole");
+  }
+  if (c.compare && !c.select_hole) throw std::invalid_argument("--compare needs --select-hole");
 }
 
 }  // namespace
 
-const char* usage() {
-  return "usage: holefill-viewer [MESH] [options]\n"
-         "Opens MESH (OBJ, OFF, PLY, STL; default: the bundled bunny) in a window.\n"
-         "\n"
-         "Scripted mode (for automation and documentation):\n"
-         "  --select-hole K                 select hole K (0 is the largest) with its islands\n"
-         "  --add-hole K                    add loop K to the selection, as shift-click does\n"
-         "                                  (repeatable; two loops: --run bridges them)\n"
-         "  --run triangulate,refine,smooth run these stages on the selected hole\n"
-         "  --fill-all                      fill every hole\n"
-         "  --remesh                        refine with the remeshing pass (toward valence 6)\n"
-         "  --fair                          smooth by fairing instead of the umbrella operator\n"
-         "  --fair-order 2|3                fairing's order (default 2; implies --fair)\n"
-         "  --compare                       show liepa (left) vs maxmin (right) on the hole\n"
-         "  --compare-triangulation-only    compare the triangulation stage only\n"
-         "  --compare-smoothing             show umbrella (left) vs fair (right) instead\n"
-         "  --size WxH                      window size (default 1280x800)\n"
-         "  --save OUT                      after the above, save the mesh (.obj .off .ply .stl)\n"
-         "                                  and exit, with no window unless --screenshot\n"
-         "  --screenshot OUT.png            render, save the window as PNG and exit\n"
-         "  --frames N                      with --screenshot: render N frames (turning the\n"
-         "                                  view a little each) and print the mean frame time\n"
-         "  --help                          print this text\n";
+std::string usage() {
+  CLI::App app("Opens MESH (OBJ, OFF, PLY, STL) in a window; drop a file on it to open another.",
+               "holefill-viewer");
+  Parsed parsed;
+  add_options(app, parsed);
+  return app.help();
 }
 
 CommandLine parse_command_line(const std::vector<std::string>& arguments) {
-  CommandLine command;
-  for (std::size_t i = 0; i < arguments.size(); ++i) {
-    const std::string& arg = arguments[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= arguments.size()) throw std::invalid_argument(arg + " needs a value");
-      return arguments[++i];
-    };
-    if (arg == "--help" || arg == "-h") {
-      command.help = true;
-    } else if (arg == "--select-hole") {
-      command.select_hole = parse_int(value(), arg);
-    } else if (arg == "--add-hole") {
-      command.add_holes.push_back(parse_int(value(), arg));
-    } else if (arg == "--run") {
-      std::stringstream stages(value());
-      for (std::string name; std::getline(stages, name, ',');)
-        command.run.push_back(parse_stage(name));
-    } else if (arg == "--fill-all") {
-      command.fill_all = true;
-    } else if (arg == "--remesh") {
-      command.remesh = true;
-    } else if (arg == "--fair") {
-      command.fair = true;
-    } else if (arg == "--fair-order") {
-      command.fair = true;
-      command.fair_order = parse_int(value(), arg);
-      if (command.fair_order != 2 && command.fair_order != 3)
-        throw std::invalid_argument("--fair-order takes 2 or 3");
-    } else if (arg == "--compare") {
-      command.compare = true;
-    } else if (arg == "--compare-triangulation-only") {
-      command.compare = true;
-      command.compare_triangulation_only = true;
-    } else if (arg == "--compare-smoothing") {
-      command.compare = true;
-      command.compare_smoothing = true;
-    } else if (arg == "--size") {
-      const std::string& size = value();
-      const auto x = size.find('x');
-      if (x == std::string::npos)
-        throw std::invalid_argument("--size needs WxH, got '" + size + "'");
-      command.width = parse_int(size.substr(0, x), arg);
-      command.height = parse_int(size.substr(x + 1), arg);
-      if (command.width < 64 || command.height < 64)
-        throw std::invalid_argument("--size is too small");
-    } else if (arg == "--frames") {
-      command.frames = parse_int(value(), arg);
-      command.report_frame_time = true;
-      if (command.frames < 4) throw std::invalid_argument("--frames needs at least 4");
-    } else if (arg == "--save") {
-      command.save = value();
-    } else if (arg == "--screenshot") {
-      command.screenshot = value();
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw std::invalid_argument("unknown option " + arg);
-    } else if (command.mesh.empty()) {
-      command.mesh = arg;
-    } else {
-      throw std::invalid_argument("only one mesh can be opened, got '" + arg + "' too");
-    }
+  CLI::App app;
+  Parsed parsed;
+  add_options(app, parsed);
+  std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());  // CLI11: last first
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    parsed.command.help = true;
+    return parsed.command;
+  } catch (const CLI::CallForVersion&) {
+    parsed.command.version = true;
+    return parsed.command;
+  } catch (const CLI::ParseError& error) {
+    throw std::invalid_argument(error.what());
   }
-  if (!command.run.empty() && !command.select_hole) {
-    throw std::invalid_argument("--run needs --select-hole");
-  }
-  if (command.report_frame_time && command.screenshot.empty()) {
-    throw std::invalid_argument("--frames needs --screenshot");
-  }
-  if (!command.add_holes.empty() && !command.select_hole) {
-    throw std::invalid_argument("--add-hole needs --select-hole");
-  }
-  if (command.compare && !command.select_hole) {
-    throw std::invalid_argument("--compare needs --select-hole");
-  }
-  return command;
+  complete_and_check(app, parsed);
+  return parsed.command;
 }
 
+std::string version() { return "holefill-viewer " HOLEFILL_VERSION; }
+
 std::filesystem::path default_mesh_path(const std::filesystem::path& executable) {
-  const std::filesystem::path compiled_in =
-      std::filesystem::path(HOLEFILL_ASSETS_DIR) / "bunny.obj";
-  if (std::filesystem::exists(compiled_in)) return compiled_in;
-  std::filesystem::path folder = executable.parent_path();
-  for (int up = 0; up < 4 && !folder.empty(); ++up, folder = folder.parent_path()) {
-    const auto candidate = folder / "assets" / "bunny.obj";
-    if (std::filesystem::exists(candidate)) return candidate;
+  // The build tree's executable sits three folders below the source tree (build/app/viewer); an
+  // installed one finds share/holefill beside its bin/.
+  const std::filesystem::path folder = executable.parent_path();
+  std::vector<std::filesystem::path> candidates{folder / "../share/holefill/assets/bunny.obj"};
+  std::filesystem::path up = folder;
+  for (int level = 0; level < 4 && !up.empty(); ++level, up = up.parent_path()) {
+    candidates.push_back(up / "assets" / "bunny.obj");
   }
-  return compiled_in;
+  const auto found = std::find_if(candidates.begin(), candidates.end(),
+                                  [](const auto& path) { return std::filesystem::exists(path); });
+  return found != candidates.end() ? found->lexically_normal() : candidates.back();
 }
 
 }  // namespace holefill::viewer

@@ -30,15 +30,23 @@ struct CommandLine {
   int frames = 4;                    // frames scripted mode renders before the screenshot
   bool report_frame_time = false;    // print the mean frame time (set by --frames)
   bool help = false;
+  bool version = false;
 };
 
-// Parses argv; throws std::invalid_argument with a message for the user on bad arguments.
+// Parses the arguments after the program's name (with CLI11: --opt=value, --, --help, --version);
+// throws std::invalid_argument with a message for the user on bad arguments. --help and
+// --version set `help` or `version` and nothing else.
 CommandLine parse_command_line(const std::vector<std::string>& arguments);
 
-const char* usage();
+// The help text, generated from the options (with their defaults).
+std::string usage();
+// "holefill-viewer VERSION".
+std::string version();
 
-// The bundled bunny: the source tree's assets/ (compiled in), else assets/ beside or above the
-// executable's folder.
+// The bundled bunny, found from the executable's path (nothing is compiled in): assets/ in the
+// executable's folder or up to three folders above it (the source tree, from build/app/viewer),
+// or ../share/holefill/assets beside an installed bin/. The last candidate (which does not exist)
+// when none does.
 std::filesystem::path default_mesh_path(const std::filesystem::path& executable);
 
 }  // namespace holefill::viewer

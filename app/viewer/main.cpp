@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -348,6 +349,14 @@ int run(const hv::CommandLine& command, const char* executable) {
   return status;
 }
 
+// This program's file: /proc/self/exe where the system has it (argv[0] may be a bare name found
+// through PATH), else argv[0].
+std::filesystem::path executable_path(const char* argv0) {
+  std::error_code error;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
+  return error ? std::filesystem::path(argv0) : self;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -355,15 +364,15 @@ int main(int argc, char** argv) {
   try {
     command = hv::parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
   } catch (const std::exception& error) {
-    std::fprintf(stderr, "holefill-viewer: %s\n\n%s", error.what(), hv::usage());
+    std::fprintf(stderr, "holefill-viewer: %s\n(--help lists the options)\n", error.what());
     return 2;
   }
-  if (command.help) {
-    std::fputs(hv::usage(), stdout);
+  if (command.help || command.version) {
+    std::puts((command.help ? hv::usage() : hv::version()).c_str());
     return 0;
   }
   try {
-    return run(command, argv[0]);
+    return run(command, executable_path(argv[0]).c_str());
   } catch (const std::exception& error) {
     std::fprintf(stderr, "holefill-viewer: %s\n", error.what());
     return 1;

@@ -40,8 +40,36 @@ TEST(CommandLine, RejectsWhatItCannotDo) {
   EXPECT_TRUE(parse_command_line({"--help"}).help);
 }
 
-TEST(CommandLine, TheBundledBunnyIsFound) {
-  EXPECT_TRUE(std::filesystem::exists(default_mesh_path("/nowhere/holefill-viewer")));
+// Found from the executable's place, nothing compiled in: this test sits in build/tests/viewer,
+// as the viewer sits in build/app/viewer; an installed viewer looks in ../share/holefill.
+TEST(CommandLine, TheBundledBunnyIsFoundFromTheExecutable) {
+  const auto self = std::filesystem::read_symlink("/proc/self/exe");
+  const auto bunny = default_mesh_path(self);
+  EXPECT_TRUE(std::filesystem::exists(bunny)) << bunny;
+  EXPECT_EQ(bunny.filename(), "bunny.obj");
+  EXPECT_FALSE(std::filesystem::exists(default_mesh_path("/nowhere/bin/holefill-viewer")));
+  const std::filesystem::path prefix = std::filesystem::temp_directory_path() / "holefill-prefix";
+  std::filesystem::create_directories(prefix / "bin");
+  std::filesystem::create_directories(prefix / "share/holefill/assets");
+  std::filesystem::copy_file(bunny, prefix / "share/holefill/assets/bunny.obj",
+                             std::filesystem::copy_options::overwrite_existing);
+  EXPECT_EQ(default_mesh_path(prefix / "bin/holefill-viewer"),
+            prefix / "share/holefill/assets/bunny.obj");
+  std::filesystem::remove_all(prefix);
+}
+
+// The conventions CLI11 gives: --opt=value, --version, and the defaults in the help.
+TEST(CommandLine, TakesTheUsualForms) {
+  const CommandLine c = parse_command_line({"--select-hole=1", "--size=800x600", "--", "-odd.obj"});
+  EXPECT_EQ(c.select_hole, 1);
+  EXPECT_EQ(c.width, 800);
+  EXPECT_EQ(c.mesh, "-odd.obj");
+  EXPECT_TRUE(parse_command_line({"--version"}).version);
+  EXPECT_NE(usage().find("1280x800"), std::string::npos) << usage();
+  EXPECT_NE(usage().find("--fair-order"), std::string::npos);
+  EXPECT_EQ(parse_command_line({"--frames", "8", "--screenshot", "a.png"}).report_frame_time,
+            true);
+  EXPECT_TRUE(parse_command_line({"--select-hole", "0", "--compare-smoothing"}).compare);
 }
 
 }  // namespace
