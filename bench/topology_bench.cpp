@@ -19,7 +19,8 @@ std::string pinched_fans_obj(int fans) {
   for (int i = 0; i < fans; ++i) {
     for (const double turn : {i + 0.0, i + 0.4}) {
       const double angle = 2.0 * std::numbers::pi * turn / fans;
-      text += "v " + std::to_string(std::cos(angle)) + " " + std::to_string(std::sin(angle)) + " 0\n";
+      text +=
+          "v " + std::to_string(std::cos(angle)) + " " + std::to_string(std::sin(angle)) + " 0\n";
     }
   }
   for (int i = 0; i < fans; ++i) {

@@ -1,7 +1,6 @@
 #include "command_line.h"
 
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <stdexcept>
 
@@ -31,7 +30,8 @@ void add_options(CLI::App& app, Parsed& parsed) {
   CommandLine& c = parsed.command;
   app.set_version_flag("--version", "holefill-viewer " HOLEFILL_VERSION);
   app.add_option("MESH", c.mesh, "the mesh to open (default: the bundled bunny)");
-  app.add_option("--select-hole", c.select_hole, "select hole K (0 is the largest) with its islands")
+  app.add_option("--select-hole", c.select_hole,
+                 "select hole K (0 is the largest) with its islands")
       ->type_name("K")
       ->group(kScripted);
   app.add_option("--add-hole", c.add_holes,

@@ -1,11 +1,11 @@
 #include "shapes.h"
 
-#include "test_meshes.h"
-
 #include <array>
 #include <cmath>
 #include <map>
 #include <vector>
+
+#include "test_meshes.h"
 
 namespace holefill::quality {
 

@@ -69,8 +69,8 @@ std::string stage_problem(const Mesh& mesh, const HoleFill& fill, const detail::
 bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options,
                        const PlannedTriangulation* plan, const detail::FaceGrid* index) {
   PlannedTriangulation planned;
-  fill.times.triangulate_seconds += timed(
-      [&] { planned = plan ? *plan : plan_triangulation(mesh, hole, options.triangulate); });
+  fill.times.triangulate_seconds +=
+      timed([&] { planned = plan ? *plan : plan_triangulation(mesh, hole, options.triangulate); });
   if (options.avoid_intersections) {
     fill.times.avoid_seconds = timed([&] {
       planned = detail::avoid_intersections(mesh, hole, std::move(planned), options.triangulate,

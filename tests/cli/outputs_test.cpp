@@ -34,16 +34,16 @@ TEST_F(Cli, AReportNamingTheInputOrTheMeshOutputIsRefused) {
   }
 }
 
-// -o naming the input (by any path to the same file) would lose the original mesh: refused before the
-// work, the input untouched.
+// -o naming the input (by any path to the same file) would lose the original mesh: refused before
+// the work, the input untouched.
 TEST_F(Cli, AMeshOutputNamingTheInputIsRefused) {
   const std::string input = in_dir("in.obj");
   fs::copy_file(bunny(), input);
   fs::create_symlink("in.obj", in_dir("link.obj"));
   fs::create_hard_link(input, in_dir("hard.obj"));
   const std::string original = read_text(input);
-  for (const std::string& output : {input, in_dir("./in.obj"), in_dir("link.obj"),
-                                    in_dir("hard.obj")}) {
+  for (const std::string& output :
+       {input, in_dir("./in.obj"), in_dir("link.obj"), in_dir("hard.obj")}) {
     const CliRun run = run_cli({"fill", input, "-o", output});
     EXPECT_EQ(run.code, cli::kUsage) << output;
     EXPECT_NE(run.err.find("is the input mesh"), std::string::npos) << run.err;

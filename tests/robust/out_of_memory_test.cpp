@@ -29,8 +29,8 @@ TEST(OutOfMemory, InAWorkerThreadReachesTheCallerWithTheMeshUnchanged) {
   // This thread plans holes too: left alone on a busy machine it could plan them all before the
   // other thread ran. Its first report waits (up to 20 s) until an allocation off it has failed.
   Progress wait_for_a_worker([main = std::this_thread::get_id()](double) {
-    for (int waited = 0; std::this_thread::get_id() == main &&
-                         testing::failed_allocations() == 0 && waited < 20'000;
+    for (int waited = 0; std::this_thread::get_id() == main && testing::failed_allocations() == 0 &&
+                         waited < 20'000;
          ++waited) {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }

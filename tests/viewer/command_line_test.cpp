@@ -67,8 +67,7 @@ TEST(CommandLine, TakesTheUsualForms) {
   EXPECT_TRUE(parse_command_line({"--version"}).version);
   EXPECT_NE(usage().find("1280x800"), std::string::npos) << usage();
   EXPECT_NE(usage().find("--fair-order"), std::string::npos);
-  EXPECT_EQ(parse_command_line({"--frames", "8", "--screenshot", "a.png"}).report_frame_time,
-            true);
+  EXPECT_EQ(parse_command_line({"--frames", "8", "--screenshot", "a.png"}).report_frame_time, true);
   EXPECT_TRUE(parse_command_line({"--select-hole", "0", "--compare-smoothing"}).compare);
 }
 

@@ -18,7 +18,8 @@ namespace {
 std::FILE* open_regular_file(const fs::path& path) {
   std::error_code ec;
   const auto status = fs::status(path, ec);
-  // Only a missing file is "no such file"; a link loop or a folder that cannot be searched says why.
+  // Only a missing file is "no such file"; a link loop or a folder that cannot be searched says
+  // why.
   if (ec && ec != std::errc::no_such_file_or_directory) {
     fail(path, "cannot be read (" + ec.message() + ")");
   }
