@@ -1,7 +1,7 @@
 // Loading a 1M-face mesh: a 708 x 708 height field (999,698 triangles) as a plain
-// OBJ, a textured OBJ (vt, vn and a material per corner and face) and a binary PLY, generated
-// here in memory, each read by load_mesh_from_memory (parse, repairs, mesh). Coordinates are
-// written as the shortest text of a float, as exporters do.
+// OBJ, a textured OBJ (vt, vn and a material per corner and face), an OFF and a binary PLY,
+// generated here in memory, each read by load_mesh_from_memory (parse, repairs, mesh). Coordinates
+// are written as the shortest text of a float, as exporters do.
 #include <benchmark/benchmark.h>
 
 #include <charconv>
@@ -75,6 +75,28 @@ std::string grid_obj(bool textured) {
   return out;
 }
 
+std::string grid_off() {
+  std::string out = "OFF\n" + std::to_string(kSide * kSide) + " " +
+                    std::to_string(2 * (kSide - 1) * (kSide - 1)) + " 0\n";
+  for (int i = 0; i < kSide; ++i) {
+    for (int j = 0; j < kSide; ++j) {
+      append_float(out, i / double(kSide));
+      append_float(out, j / double(kSide));
+      append_float(out, height(i, j));
+      out += '\n';
+    }
+  }
+  for_each_triangle([&](int a, int b, int c) {
+    out += '3';
+    for (const int v : {a, b, c}) {
+      out += ' ';
+      out += std::to_string(v);
+    }
+    out += '\n';
+  });
+  return out;
+}
+
 std::string grid_binary_ply() {
   const int faces = 2 * (kSide - 1) * (kSide - 1);
   std::string out =
@@ -120,6 +142,11 @@ void LoadTexturedObj1M(benchmark::State& state) {
   load(state, bytes, "grid.obj");
 }
 
+void LoadOff1M(benchmark::State& state) {
+  static const std::string bytes = grid_off();
+  load(state, bytes, "grid.off");
+}
+
 void LoadBinaryPly1M(benchmark::State& state) {
   static const std::string bytes = grid_binary_ply();
   load(state, bytes, "grid.ply");
@@ -127,6 +154,7 @@ void LoadBinaryPly1M(benchmark::State& state) {
 
 BENCHMARK(LoadObj1M)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(LoadTexturedObj1M)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(LoadOff1M)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(LoadBinaryPly1M)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace

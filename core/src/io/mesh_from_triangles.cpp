@@ -3,18 +3,58 @@
 #include <algorithm>
 
 namespace holefill::io {
+namespace {
 
+// Sorts one vertex's uses, already in triangle order: by insertion where a vertex has a few
+// edges (stable, so ties stay in triangle order), else by the full order.
+void sort_run(std::vector<EdgeUse>::iterator begin, std::vector<EdgeUse>::iterator end) {
+  constexpr std::ptrdiff_t kInsertionLimit = 32;
+  if (end - begin > kInsertionLimit) {
+    std::sort(begin, end);
+    return;
+  }
+  for (auto i = begin + (begin != end ? 1 : 0); i < end; ++i) {
+    const EdgeUse u = *i;
+    auto j = i;
+    for (; j > begin && u.edge < (j - 1)->edge; --j) *j = *(j - 1);
+    *j = u;
+  }
+}
+
+}  // namespace
+
+// A counting sort by the smaller vertex (stable: triangles in order), then each vertex's uses by
+// the larger vertex: the order of sorting by (edge, triangle), in time linear in the triangles
+// where a comparison sort of all uses was the largest cost of loading a big mesh.
 std::vector<EdgeUse> edge_uses(const std::vector<Triangle>& triangles) {
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * triangles.size());
-  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+  auto use = [&triangles](int t, int c) -> EdgeUse {
+    const auto a = static_cast<std::uint32_t>(triangles[t][c]);
+    const auto b = static_cast<std::uint32_t>(triangles[t][(c + 1) % 3]);
+    return {static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b), t, a < b};
+  };
+  std::uint32_t vertices = 0;
+  for (const auto& triangle : triangles) {
+    for (const int v : triangle) vertices = std::max(vertices, static_cast<std::uint32_t>(v) + 1);
+  }
+  std::vector<std::size_t> run_end(vertices + 1, 0);  // after the loop below: each run's start
+  const int count = static_cast<int>(triangles.size());
+  for (int t = 0; t < count; ++t) {
+    for (int c = 0; c < 3; ++c) ++run_end[(use(t, c).edge >> 32) + 1];
+  }
+  for (std::uint32_t v = 0; v < vertices; ++v) run_end[v + 1] += run_end[v];
+  std::vector<EdgeUse> uses(3 * triangles.size());
+  for (int t = 0; t < count; ++t) {
     for (int c = 0; c < 3; ++c) {
-      const auto a = static_cast<std::uint32_t>(triangles[t][c]);
-      const auto b = static_cast<std::uint32_t>(triangles[t][(c + 1) % 3]);
-      uses.push_back({static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b), t, a < b});
+      const EdgeUse u = use(t, c);
+      uses[run_end[u.edge >> 32]++] = u;
     }
   }
-  std::sort(uses.begin(), uses.end());
+  std::size_t begin = 0;
+  for (std::uint32_t v = 0; v < vertices; ++v) {
+    sort_run(uses.begin() + static_cast<std::ptrdiff_t>(begin),
+             uses.begin() + static_cast<std::ptrdiff_t>(run_end[v]));
+    begin = run_end[v];
+  }
   return uses;
 }
 

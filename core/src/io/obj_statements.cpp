@@ -20,7 +20,21 @@ constexpr std::array<std::string_view, 5> kElements = {"l", "p", "curv", "curv2"
 
 std::streambuf::int_type ObjStatements::underflow() {
   if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
-  if (!next_statement()) return traits_type::eof();
+  bool served = false;
+  while (!served && !failure_ && next_statement()) {
+    const std::string_view keyword = read_directly_ ? direct_keyword() : std::string_view();
+    if (keyword.empty()) {
+      served = true;
+      continue;
+    }
+    // std::istream would swallow an exception thrown here: kept for rethrow_failure().
+    try {
+      read_directly_(keyword);
+    } catch (...) {
+      failure_ = std::current_exception();
+    }
+  }
+  if (!served) return traits_type::eof();
   served_.assign(statement_);
   served_ += " \n";
   setg(served_.data(), served_.data(), served_.data() + served_.size());
@@ -58,6 +72,21 @@ bool ObjStatements::next_statement() {
     return true;
   }
   return false;
+}
+
+std::string_view ObjStatements::direct_keyword() const {
+  const std::size_t start = statement_.find_first_not_of(" \t");
+  if (start == std::string_view::npos) return {};
+  std::size_t end = start;
+  while (end < statement_.size() && !is_blank(statement_[end])) ++end;
+  if (end < statement_.size() && statement_[end] != ' ' && statement_[end] != '\t') return {};
+  const std::string_view keyword = statement_.substr(start, end - start);
+  if (keyword == "v" || keyword == "vt" || keyword == "vn") return keyword;
+  // tinyobjloader reports a face only when something follows its keyword.
+  if (keyword == "f" && statement_.find_first_not_of(" \t", end) != std::string_view::npos) {
+    return keyword;
+  }
+  return {};
 }
 
 void ObjStatements::classify(std::string_view keyword) {

@@ -22,12 +22,16 @@ class PlyBody {
         path_(path),
         line_offset_(header.header_lines) {}
 
-  // Starts the next record; `where` names it in messages.
-  void begin_record(const std::string& where) {
-    where_ = where;
+  // Starts record `index` of the `count` records of `element`.
+  void begin_record(const std::string& element, unsigned long long index,
+                    unsigned long long count) {
+    element_ = &element;
+    index_ = index;
+    count_ = count;
+    record_line_ = 0;
     if (encoding_ != PlyEncoding::Ascii) return;
-    if (!next_content_line(record_)) fail(path_, "ends before " + where_ + " (truncated?)");
-    where_ = at_line(line_number()) + where_;
+    if (!next_content_line(record_)) fail(path_, "ends before " + where() + " (truncated?)");
+    record_line_ = line_number();
   }
 
   // Ends the record: in ASCII, its line must hold no more values.
@@ -35,12 +39,17 @@ class PlyBody {
     if (encoding_ != PlyEncoding::Ascii) return;
     skip_blanks(record_);
     if (!record_.empty()) {
-      fail(path_, where_ + " has more values than the header's properties give it (" +
+      fail(path_, where() + " has more values than the header's properties give it (" +
                       quoted(record_) + " left over)");
     }
   }
 
-  const std::string& where() const { return where_; }
+  // The current record, for messages (made only when one is needed: once per record was a
+  // large part of reading a big binary file).
+  std::string where() const {
+    return (record_line_ ? at_line(record_line_) : std::string()) + "'" + *element_ + "' element " +
+           std::to_string(index_) + " of " + std::to_string(count_);
+  }
 
   double read(PlyType type) {
     return encoding_ == PlyEncoding::Ascii ? read_text(type) : read_binary(type);
@@ -83,7 +92,7 @@ class PlyBody {
   double read_binary(PlyType type) {
     const std::size_t size = size_of(type);
     if (bytes_.size() - position_ < size) {
-      fail(path_, "ends in the middle of " + where_ + " (truncated?)");
+      fail(path_, "ends in the middle of " + where() + " (truncated?)");
     }
     unsigned char raw[8];
     std::memcpy(raw, bytes_.data() + position_, size);
@@ -115,21 +124,21 @@ class PlyBody {
   double read_text(PlyType type) {
     const std::string_view token = take_token(record_);
     if (token.empty()) {
-      fail(path_, where_ + " has fewer values than the header's properties give it");
+      fail(path_, where() + " has fewer values than the header's properties give it");
     }
     if (is_integer_type(type)) {
       long long value = 0;
       if (!parse_integer(token, value)) {
-        fail(path_, where_ + ": expected a whole number, got " + quoted(token));
+        fail(path_, where() + ": expected a whole number, got " + quoted(token));
       }
       if (!fits(value, type)) {
-        fail(path_, where_ + ": " + quoted(token) + " does not fit the property's type");
+        fail(path_, where() + ": " + quoted(token) + " does not fit the property's type");
       }
       return static_cast<double>(value);
     }
     double value = 0.0;
     if (!parse_double(token, value)) {
-      fail(path_, where_ + ": expected a number, got " + quoted(token));
+      fail(path_, where() + ": expected a number, got " + quoted(token));
     }
     // What the header says the value is: a float property holds a float, as in a binary file.
     if (type != PlyType::Float32) return value;
@@ -145,8 +154,10 @@ class PlyBody {
   PlyEncoding encoding_;
   const fs::path& path_;
   std::size_t line_offset_;
-  std::size_t position_ = 0;  // binary: the next byte
-  std::string where_;
+  std::size_t position_ = 0;              // binary: the next byte
+  const std::string* element_ = nullptr;  // the current record's element, index and line
+  unsigned long long index_ = 0, count_ = 0;
+  std::size_t record_line_ = 0;
 };
 
 // The index of the property named one of `names` (not a list unless `list`), or -1.
@@ -186,10 +197,13 @@ void read_element(PlyBody& body, const PlyElement& element, const ElementColumns
                           find_property(element, {"y"}, false),
                           find_property(element, {"z"}, false)};
   const int face_list = is_face ? face_list_of(element) : -1;
-  if (is_vertex) soup.positions.reserve(element.count);
+  if (is_vertex) soup.positions.reserve(element.count);  // the header's counts fit the file
+  if (is_face) {
+    soup.face_end.reserve(element.count);
+    soup.face_line.reserve(element.count);
+  }
   for (unsigned long long r = 0; r < element.count; ++r) {
-    body.begin_record("'" + element.name + "' element " + std::to_string(r) + " of " +
-                      std::to_string(element.count));
+    body.begin_record(element.name, r, element.count);
     Point p(0.0, 0.0, 0.0);
     for (int i = 0; i < static_cast<int>(element.properties.size()); ++i) {
       const auto& property = element.properties[i];

@@ -1,8 +1,8 @@
 #include "soup_to_mesh.h"
 
 #include <algorithm>
+#include <bit>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "holefill/triangulate.h"
 #include "mesh_from_triangles.h"
@@ -16,6 +16,31 @@ namespace {
 // Polygons up to this many corners are triangulated by the max-min angle dynamic program (which
 // also keeps a non-convex polygon from folding over itself); larger ones as a fan.
 constexpr std::size_t kMaxOptimalPolygon = 64;
+
+// The triangles (by positions in ks) that cut the polygon of soup corners ks, more than three
+// with no two consecutive ones at one vertex.
+std::vector<Triangle> polygon_pieces(const Soup& soup, const std::vector<int>& ks) {
+  auto vertex = [&soup](int k) { return soup.corners[k]; };
+  const int n = static_cast<int>(ks.size());
+  std::vector<Triangle> pieces;
+  if (ks.size() <= kMaxOptimalPolygon) {
+    HolePolygon polygon;
+    for (const int k : ks) polygon.points.push_back(soup.positions[vertex(k)]);
+    polygon.outside_normals.assign(ks.size(), Point(0.0, 0.0, 0.0));
+    for (int i = 0; i < n; ++i) {
+      for (int j = i + 1; j < n; ++j) {
+        if (vertex(ks[i]) == vertex(ks[j])) polygon.forbidden_chords.emplace_back(i, j);
+      }
+    }
+    if (const auto optimal = triangulate_polygon(polygon, TriangulateOptions{})) {
+      for (const auto& t : optimal->triangles) pieces.push_back({t[0], t[1], t[2]});
+    }
+  }
+  if (pieces.empty()) {
+    for (int c = 1; c + 1 < n; ++c) pieces.push_back({0, c, c + 1});
+  }
+  return pieces;
+}
 
 // Triangulates the soup's polygon f: each triangle's corners (soup positions) go to `triangles`
 // and, with `corners`, the soup corners (indices into soup.corners) they came from to `corners`.
@@ -35,29 +60,13 @@ void triangulate_face(const Soup& soup, std::size_t f, std::vector<int>& ks,
     ++report.degenerate_faces_dropped;
     return;
   }
-  const int n = static_cast<int>(ks.size());
-  std::vector<Triangle> pieces;  // positions in ks
-  if (n == 3) {
-    pieces.push_back({0, 1, 2});
-  } else {
-    ++report.polygons_triangulated;
-    if (ks.size() <= kMaxOptimalPolygon) {
-      HolePolygon polygon;
-      for (const int k : ks) polygon.points.push_back(soup.positions[vertex(k)]);
-      polygon.outside_normals.assign(ks.size(), Point(0.0, 0.0, 0.0));
-      for (int i = 0; i < n; ++i) {
-        for (int j = i + 1; j < n; ++j) {
-          if (vertex(ks[i]) == vertex(ks[j])) polygon.forbidden_chords.emplace_back(i, j);
-        }
-      }
-      if (const auto optimal = triangulate_polygon(polygon, TriangulateOptions{})) {
-        for (const auto& t : optimal->triangles) pieces.push_back({t[0], t[1], t[2]});
-      }
-    }
-    if (pieces.empty()) {
-      for (int c = 1; c + 1 < n; ++c) pieces.push_back({0, c, c + 1});
-    }
+  if (ks.size() == 3) {  // most faces: nothing to cut
+    triangles.push_back({vertex(ks[0]), vertex(ks[1]), vertex(ks[2])});
+    if (corners) corners->push_back({ks[0], ks[1], ks[2]});
+    return;
   }
+  ++report.polygons_triangulated;
+  const std::vector<Triangle> pieces = polygon_pieces(soup, ks);
   bool dropped = false;
   for (const auto& p : pieces) {
     const Triangle t{vertex(ks[p[0]]), vertex(ks[p[1]]), vertex(ks[p[2]])};
@@ -109,11 +118,12 @@ std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles, std::vect
 
 // Flips triangles so that neighbours across every edge with exactly two triangles use it in
 // opposite directions; per connected piece, the orientation most triangles have wins. Returns
-// the number flipped, and turns `corners` (when not empty) alike. Pieces that cannot be oriented
-// (a Moebius strip) keep a conflict, which detach_non_manifold resolves.
-std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Triangle>& corners) {
+// the number flipped, and turns `corners` (when not empty) and the triangles' `uses` (their
+// edge_uses) alike. Pieces that cannot be oriented (a Moebius strip) keep a conflict, which
+// detach_non_manifold resolves.
+std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Triangle>& corners,
+                                std::vector<EdgeUse>& uses) {
   const int count = static_cast<int>(triangles.size());
-  const std::vector<EdgeUse> uses = edge_uses(triangles);
   // Up to three neighbours per triangle, and whether each must take the opposite orientation.
   std::vector<std::array<int, 3>> neighbour(triangles.size(), {-1, -1, -1});
   std::vector<std::array<bool, 3>> must_flip(triangles.size(), {false, false, false});
@@ -129,6 +139,7 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
   });
   std::vector<signed char> flip(triangles.size(), -1);
   std::vector<int> piece, queue;
+  std::vector<char> turned(triangles.size(), 0);
   std::size_t flipped = 0;
   for (int seed = 0; seed < count; ++seed) {
     if (flip[seed] >= 0) continue;
@@ -153,8 +164,14 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
       if (flip[t] != turn) continue;
       std::swap(triangles[t][1], triangles[t][2]);
       if (!corners.empty()) std::swap(corners[t][1], corners[t][2]);
+      turned[t] = 1;
       ++flipped;
     }
+  }
+  // A flipped triangle runs along each of its edges the other way (the edges stay).
+  if (flipped == 0) return 0;
+  for (auto& use : uses) {
+    if (turned[use.triangle]) use.forward = !use.forward;
   }
   return flipped;
 }
@@ -182,74 +199,105 @@ std::vector<char> detach_non_manifold(const std::vector<EdgeUse>& uses, std::siz
   return detached;
 }
 
-// OpenMesh cannot store a vertex whose closed fan of triangles is not all it has (two cones
-// touching at their tips). Each such closed fan gets its own copy of the vertex, at the same
-// position (appended to `positions`), so both surfaces stay closed. Fans with a boundary may
-// share a vertex: that is a pinched boundary, which OpenMesh stores. Returns the copies made;
-// `origin` gets the vertex each copy was made from.
-std::size_t split_closed_fans(std::vector<Triangle>& triangles, const std::vector<char>& detached,
-                              std::vector<Point>& positions, std::vector<int>& origin) {
-  const std::vector<EdgeUse> uses = edge_uses(triangles);
-  // Wedges are (triangle, corner) pairs; wedges at one vertex joined across shared edges form
-  // that vertex's fans.
-  std::vector<int> parent(3 * triangles.size());
-  for (std::size_t w = 0; w < parent.size(); ++w) parent[w] = static_cast<int>(w);
-  auto find = [&parent](int w) {
-    while (parent[w] != w) w = parent[w] = parent[parent[w]];
-    return w;
-  };
-  auto wedge = [&triangles](int t, int vertex) {
-    const auto& c = triangles[t];
-    return 3 * t + (c[0] == vertex ? 0 : c[1] == vertex ? 1 : 2);
-  };
-  std::vector<char> open(parent.size(), 0);  // the wedge lies on a boundary edge
-  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
-    int live[2], count = 0;
-    for (std::size_t k = i; k < j; ++k) {
-      if (!detached[uses[k].triangle] && count < 2) live[count++] = uses[k].triangle;
-    }
-    const int a = static_cast<int>(uses[i].edge >> 32);
-    const int b = static_cast<int>(uses[i].edge & 0xFFFFFFFFu);
-    if (count == 1) {
-      open[wedge(live[0], a)] = open[wedge(live[0], b)] = 1;
-    } else if (count == 2) {
-      for (const int v : {a, b}) {
-        parent[find(wedge(live[0], v))] = find(wedge(live[1], v));
+// The fans of triangles around each vertex: wedges, (triangle, corner) pairs, joined across the
+// edges two live triangles share, and which wedges lie on a boundary edge.
+class WedgeFans {
+ public:
+  WedgeFans(const std::vector<Triangle>& triangles, const std::vector<EdgeUse>& uses,
+            const std::vector<char>& detached)
+      : parent_(3 * triangles.size()), open_(3 * triangles.size(), 0) {
+    for (std::size_t w = 0; w < parent_.size(); ++w) parent_[w] = static_cast<int>(w);
+    auto wedge = [&triangles](int t, int vertex) {
+      const auto& c = triangles[t];
+      return 3 * t + (c[0] == vertex ? 0 : c[1] == vertex ? 1 : 2);
+    };
+    for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+      int live[2], count = 0;
+      for (std::size_t k = i; k < j; ++k) {
+        if (!detached[uses[k].triangle] && count < 2) live[count++] = uses[k].triangle;
       }
-    }
-  });
-  // Fans per vertex: (vertex, fan root) pairs, and which fans are open.
-  std::vector<std::pair<int, int>> fans;
-  std::vector<char> fan_open(parent.size(), 0);
-  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+      const int a = static_cast<int>(uses[i].edge >> 32);
+      const int b = static_cast<int>(uses[i].edge & 0xFFFFFFFFu);
+      if (count == 1) {
+        open_[wedge(live[0], a)] = open_[wedge(live[0], b)] = 1;
+      } else if (count == 2) {
+        for (const int v : {a, b}) parent_[fan(wedge(live[0], v))] = fan(wedge(live[1], v));
+      }
+    });
+  }
+
+  // The fan of wedge w, named by one of its wedges.
+  int fan(int w) {
+    while (parent_[w] != w) w = parent_[w] = parent_[parent_[w]];
+    return w;
+  }
+  bool open(int w) const { return open_[w] != 0; }
+
+ private:
+  std::vector<int> parent_;
+  std::vector<char> open_;
+};
+
+// The (vertex, fan) pairs of the vertices with more than one fan, sorted, each once.
+std::vector<std::pair<int, int>> fans_of_shared_vertices(const std::vector<Triangle>& triangles,
+                                                         const std::vector<char>& detached,
+                                                         std::size_t vertices, WedgeFans& wedges) {
+  std::vector<int> first_fan(vertices, -1);
+  std::vector<char> several(vertices, 0);
+  const int count = static_cast<int>(triangles.size());
+  for (int t = 0; t < count; ++t) {
     if (detached[t]) continue;
     for (int c = 0; c < 3; ++c) {
-      const int root = find(3 * t + c);
-      fans.emplace_back(triangles[t][c], root);
-      if (open[3 * t + c]) fan_open[root] = 1;
+      const int v = triangles[t][c], fan = wedges.fan(3 * t + c);
+      if (first_fan[v] < 0) first_fan[v] = fan;
+      if (first_fan[v] != fan) several[v] = 1;
+    }
+  }
+  std::vector<std::pair<int, int>> fans;
+  for (int t = 0; t < count; ++t) {
+    if (detached[t]) continue;
+    for (int c = 0; c < 3; ++c) {
+      if (several[triangles[t][c]]) fans.emplace_back(triangles[t][c], wedges.fan(3 * t + c));
     }
   }
   std::sort(fans.begin(), fans.end());
   fans.erase(std::unique(fans.begin(), fans.end()), fans.end());
-  std::unordered_map<int, int> copy_of_fan;  // fan root -> its own vertex
+  return fans;
+}
+
+// OpenMesh cannot store a vertex whose closed fan of triangles is not all it has (two cones
+// touching at their tips). Each such closed fan gets its own copy of the vertex, at the same
+// position (appended to `positions`), so both surfaces stay closed. Fans with a boundary may
+// share a vertex: that is a pinched boundary, which OpenMesh stores. Returns the copies made;
+// `origin` gets the vertex each copy was made from. `uses` are the triangles' edge_uses.
+std::size_t split_closed_fans(std::vector<Triangle>& triangles, const std::vector<EdgeUse>& uses,
+                              const std::vector<char>& detached, std::vector<Point>& positions,
+                              std::vector<int>& origin) {
+  WedgeFans wedges(triangles, uses, detached);
+  const auto fans = fans_of_shared_vertices(triangles, detached, positions.size(), wedges);
+  if (fans.empty()) return 0;
+  std::vector<char> open_fan(3 * triangles.size(), 0);
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    for (int c = 0; c < 3; ++c) {
+      if (!detached[t] && wedges.open(3 * t + c)) open_fan[wedges.fan(3 * t + c)] = 1;
+    }
+  }
+  std::unordered_map<int, int> copy_of_fan;  // fan -> its own vertex
   for (std::size_t i = 0; i < fans.size();) {
     std::size_t j = i;
     while (j < fans.size() && fans[j].first == fans[i].first) ++j;
-    if (j - i > 1) {
-      const bool any_open = std::any_of(fans.begin() + static_cast<std::ptrdiff_t>(i),
-                                        fans.begin() + static_cast<std::ptrdiff_t>(j),
-                                        [&](const auto& fan) { return fan_open[fan.second]; });
-      bool original_taken = any_open;
-      for (std::size_t k = i; k < j; ++k) {
-        if (fan_open[fans[k].second]) continue;
-        if (!original_taken) {
-          original_taken = true;
-          continue;
-        }
-        copy_of_fan[fans[k].second] = static_cast<int>(positions.size());
-        positions.push_back(positions[fans[k].first]);
-        origin.push_back(fans[k].first);
+    bool original_taken = std::any_of(fans.begin() + static_cast<std::ptrdiff_t>(i),
+                                      fans.begin() + static_cast<std::ptrdiff_t>(j),
+                                      [&](const auto& fan) { return open_fan[fan.second] != 0; });
+    for (std::size_t k = i; k < j; ++k) {
+      if (open_fan[fans[k].second]) continue;
+      if (!original_taken) {
+        original_taken = true;
+        continue;
       }
+      copy_of_fan[fans[k].second] = static_cast<int>(positions.size());
+      positions.push_back(positions[fans[k].first]);
+      origin.push_back(fans[k].first);
     }
     i = j;
   }
@@ -257,19 +305,30 @@ std::size_t split_closed_fans(std::vector<Triangle>& triangles, const std::vecto
   for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
     if (detached[t]) continue;
     for (int c = 0; c < 3; ++c) {
-      const auto found = copy_of_fan.find(find(3 * t + c));
+      const auto found = copy_of_fan.find(wedges.fan(3 * t + c));
       if (found != copy_of_fan.end()) triangles[t][c] = found->second;
     }
   }
   return copy_of_fan.size();
 }
 
+// Positions equal to an earlier one, counted with a flat open-addressing table of indices (a node
+// per position in a std::unordered_set was most of this count's time on big meshes).
 std::size_t count_duplicate_positions(const std::vector<Point>& positions) {
-  std::unordered_set<PositionKey, PositionHash> seen;
-  seen.reserve(positions.size());
+  const std::size_t slots = std::bit_ceil(2 * positions.size() + 1);
+  std::vector<std::uint32_t> table(slots, 0);  // 1 + the index of the position there, 0: empty
   std::size_t duplicates = 0;
-  for (const auto& p : positions) {
-    if (!seen.insert(PositionKey(p)).second) ++duplicates;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const PositionKey key(positions[i]);
+    std::size_t slot = PositionHash{}(key) & (slots - 1);
+    while (table[slot] != 0 && !(PositionKey(positions[table[slot] - 1]) == key)) {
+      slot = (slot + 1) & (slots - 1);
+    }
+    if (table[slot] != 0) {
+      ++duplicates;
+    } else {
+      table[slot] = static_cast<std::uint32_t>(i + 1);
+    }
   }
   return duplicates;
 }
@@ -288,15 +347,17 @@ Mesh build_mesh(const Soup& soup, LoadReport& report) {
     triangle_face.resize(triangles.size(), static_cast<int>(f));
   }
   report.duplicate_faces_dropped = drop_duplicate_triangles(triangles, triangle_face, corners);
-  report.faces_flipped = orient_consistently(triangles, corners);
+  std::vector<EdgeUse> uses = edge_uses(triangles);
+  report.faces_flipped = orient_consistently(triangles, corners, uses);
   if (report.format != "stl") {
     report.duplicate_positions = count_duplicate_positions(soup.positions);
   }
-  const std::vector<char> detached = detach_non_manifold(edge_uses(triangles), triangles.size());
+  const std::vector<char> detached = detach_non_manifold(uses, triangles.size());
   std::vector<Point> positions = soup.positions;
   std::vector<int> origin(positions.size());
   for (std::size_t v = 0; v < origin.size(); ++v) origin[v] = static_cast<int>(v);
-  report.vertices_split = split_closed_fans(triangles, detached, positions, origin);
+  report.vertices_split = split_closed_fans(triangles, uses, detached, positions, origin);
+  uses = {};
   MeshSources sources;
   Mesh mesh = assemble(positions, triangles, detached, soup.positions.size(), report, sources);
   SoupOrigins origins;

@@ -1,0 +1,237 @@
+// Loading a dirty soup gives one mesh whatever the file format, and that mesh is the one OpenMesh's
+// add_face builds from its faces: the loader's linear-time repairs and its direct construction of
+// the half-edges (core/src/io) against a plain sort and the library's own construction.
+#include <OpenMesh/Tools/Utils/MeshCheckerT.hh>
+#include <algorithm>
+#include <cstring>
+#include <random>
+#include <set>
+#include <tuple>
+
+#include "dirty_meshes.h"
+#include "holefill/holes.h"
+#include "io/mesh_from_triangles.h"
+
+namespace holefill::testing {
+namespace {
+
+// The uses in the order the contract gives: every triangle's three edges, sorted by (edge,
+// triangle) with a comparison sort.
+std::vector<io::EdgeUse> sorted_edge_uses(const std::vector<io::Triangle>& triangles) {
+  std::vector<io::EdgeUse> uses;
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    for (int c = 0; c < 3; ++c) {
+      const auto a = static_cast<std::uint32_t>(triangles[t][c]);
+      const auto b = static_cast<std::uint32_t>(triangles[t][(c + 1) % 3]);
+      uses.push_back({std::uint64_t{std::min(a, b)} << 32 | std::max(a, b), t, a < b});
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+  return uses;
+}
+
+TEST(MeshAssembly, EdgeUsesAreThoseOfSortingByEdgeThenTriangle) {
+  std::mt19937 rng(7);
+  // Few vertices: edges with many triangles in both directions; then a hub with 300 edges (a
+  // vertex run far longer than the insertion sort handles).
+  std::uniform_int_distribution<int> few(0, 11);
+  std::vector<io::Triangle> triangles;
+  while (triangles.size() < 400) {
+    const io::Triangle t{few(rng), few(rng), few(rng)};
+    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) triangles.push_back(t);
+  }
+  std::uniform_int_distribution<int> many(1, 300);
+  for (int i = 0; i < 600; ++i) {
+    const int a = many(rng), b = a % 300 + 1;
+    triangles.push_back(i % 2 ? io::Triangle{0, a, b} : io::Triangle{b, 0, a});
+  }
+  const auto uses = io::edge_uses(triangles);
+  const auto expected = sorted_edge_uses(triangles);
+  ASSERT_EQ(uses.size(), expected.size());
+  for (std::size_t i = 0; i < uses.size(); ++i) {
+    EXPECT_EQ(uses[i].edge, expected[i].edge) << i;
+    EXPECT_EQ(uses[i].triangle, expected[i].triangle) << i;
+    EXPECT_EQ(uses[i].forward, expected[i].forward) << i;
+  }
+}
+
+std::string off_text(const Soup& soup) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "OFF\n" << soup.points.size() << ' ' << soup.faces.size() << " 0\n";
+  for (const auto& p : soup.points) text << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  for (const auto& f : soup.faces) {
+    text << f.size();
+    for (const int c : f) text << ' ' << c;
+    text << '\n';
+  }
+  return text.str();
+}
+
+std::string binary_ply(const Soup& soup) {
+  std::string out =
+      "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(soup.points.size()) +
+      "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+      std::to_string(soup.faces.size()) + "\nproperty list uchar int vertex_indices\nend_header\n";
+  auto put = [&out](auto value) {
+    char raw[sizeof value];
+    std::memcpy(raw, &value, sizeof value);
+    out.append(raw, sizeof value);
+  };
+  for (const auto& p : soup.points) put(p[0]), put(p[1]), put(p[2]);
+  for (const auto& f : soup.faces) {
+    put(static_cast<std::uint8_t>(f.size()));
+    for (const int c : f) put(static_cast<std::int32_t>(c));
+  }
+  return out;
+}
+
+// Every half-edge as (from, to, face, the next half-edge's end), and the positions: two meshes
+// with equal structures have the same elements in the same order, linked alike.
+using Structure = std::tuple<std::vector<Point>, std::vector<std::tuple<int, int, int, int>>>;
+Structure structure(const Mesh& mesh) {
+  Structure s;
+  for (const auto v : mesh.vertices()) std::get<0>(s).push_back(mesh.point(v));
+  for (const auto h : mesh.halfedges()) {
+    std::get<1>(s).emplace_back(mesh.from_vertex_handle(h).idx(), mesh.to_vertex_handle(h).idx(),
+                                mesh.face_handle(h).idx(),
+                                mesh.to_vertex_handle(mesh.next_halfedge_handle(h)).idx());
+  }
+  return s;
+}
+
+std::vector<std::vector<int>> face_lists(const Mesh& mesh) {
+  std::vector<std::vector<int>> faces;
+  for (const auto f : mesh.faces()) {
+    faces.emplace_back();
+    for (const auto v : mesh.fv_range(f)) faces.back().push_back(v.idx());
+  }
+  return faces;
+}
+
+// The inner half-edges as a set of (from, to, next's end), and each boundary loop's vertices
+// from its smallest, sorted: what must not depend on how the mesh was built.
+std::pair<std::set<std::tuple<int, int, int>>, std::vector<std::vector<int>>> connectivity(
+    const Mesh& mesh) {
+  std::set<std::tuple<int, int, int>> inner;
+  for (const auto h : mesh.halfedges()) {
+    if (mesh.is_boundary(h)) continue;
+    inner.emplace(mesh.from_vertex_handle(h).idx(), mesh.to_vertex_handle(h).idx(),
+                  mesh.to_vertex_handle(mesh.next_halfedge_handle(h)).idx());
+  }
+  std::vector<std::vector<int>> loops;
+  for (const auto& hole : find_holes(mesh)) {
+    loops.emplace_back();
+    for (const auto v : hole.vertices) loops.back().push_back(v.idx());
+    std::rotate(loops.back().begin(), std::min_element(loops.back().begin(), loops.back().end()),
+                loops.back().end());
+  }
+  std::sort(loops.begin(), loops.end());
+  return {inner, loops};
+}
+
+Mesh built_by_add_face(const Mesh& loaded) {
+  Mesh mesh;
+  for (const auto v : loaded.vertices()) mesh.add_vertex(loaded.point(v));
+  for (const auto& face : face_lists(loaded)) {
+    std::vector<VertexHandle> corners;
+    for (const int v : face) corners.emplace_back(v);
+    EXPECT_TRUE(mesh.add_face(corners).is_valid());
+  }
+  return mesh;
+}
+
+struct DirtySoup {
+  const char* name;
+  Soup soup;
+};
+
+// Soups with every kind of repair the loader makes: flipped, duplicated and degenerate faces,
+// polygons, a fin on an edge, closed surfaces touching at a vertex, pinched open fans, cuts.
+std::vector<DirtySoup> dirty_soups() {
+  std::vector<DirtySoup> soups;
+  Soup flipped = sphere_soup(2);
+  for (std::size_t f = 0; f < flipped.faces.size(); f += 3) {
+    std::swap(flipped.faces[f][1], flipped.faces[f][2]);
+  }
+  flipped.faces.push_back(flipped.faces[10]);                                // a duplicate
+  flipped.faces.push_back({flipped.faces[20][0], flipped.faces[20][0], 5});  // degenerate
+  soups.push_back({"flipped sphere", flipped});
+  Soup fin = sphere_soup(1);
+  fin.points.push_back({2.0, 2.0, 2.0});
+  fin.faces.push_back({fin.faces[0][0], fin.faces[0][1], static_cast<int>(fin.points.size()) - 1});
+  soups.push_back({"sphere with a fin", fin});
+  // Two spheres, the second moved so that its point opposite the first's point 0 lies on it;
+  // both faces' corners there are made one vertex.
+  Soup touching = sphere_soup(1);
+  Soup other = touching;
+  const Point tip = touching.points[0];
+  for (auto& p : other.points) p += 2.0 * tip;
+  const auto opposite = std::min_element(
+      other.points.begin(), other.points.end(),
+      [&](const Point& a, const Point& b) { return (a - tip).sqrnorm() < (b - tip).sqrnorm(); });
+  const int glued = static_cast<int>(touching.points.size() + (opposite - other.points.begin()));
+  touching = append(touching, other);
+  for (auto& face : touching.faces) {
+    for (int& c : face) c = c == glued ? 0 : c;
+  }
+  soups.push_back({"spheres touching at a vertex", touching});
+  Soup fans;
+  fans.points.push_back({0, 0, 0});
+  for (int i = 0; i < 40; ++i) {
+    fans.points.push_back({std::cos(0.15 * i), std::sin(0.15 * i), 0.0});
+    fans.points.push_back({std::cos(0.15 * i + 0.07), std::sin(0.15 * i + 0.07), 0.1});
+    fans.faces.push_back({0, 2 * i + 1, 2 * i + 2});
+  }
+  soups.push_back({"pinched fans", fans});
+  Soup quads = terrain_soup(12);
+  for (std::size_t f = 0; f + 1 < quads.faces.size(); f += 8) {
+    quads.faces[f].push_back(quads.faces[f + 1][2]);  // some polygons, maybe non-planar
+  }
+  std::mt19937 rng(3);
+  cut_apart(
+      quads, [](const Point& p) { return p[0] < 0.5; }, 0.0, rng);
+  soups.push_back({"terrain with polygons, cut apart", quads});
+  return soups;
+}
+
+TEST(MeshAssembly, DirtySoupsLoadAsOneMeshInEveryFormatAndAsAddFaceBuildsIt) {
+  for (const auto& [name, soup] : dirty_soups()) {
+    SCOPED_TRACE(name);
+    LoadReport obj_report, off_report, ply_report;
+    const Mesh obj = load_mesh_from_memory(obj_text(soup), "dirty.obj", &obj_report);
+    const Mesh off = load_mesh_from_memory(off_text(soup), "dirty.off", &off_report);
+    const Mesh ply = load_mesh_from_memory(binary_ply(soup), "dirty.ply", &ply_report);
+    EXPECT_TRUE(OpenMesh::Utils::MeshCheckerT<Mesh>(obj).check());
+    EXPECT_EQ(structure(obj), structure(off));
+    EXPECT_EQ(structure(obj), structure(ply));
+    EXPECT_EQ(obj_report.warnings, off_report.warnings);
+    EXPECT_EQ(obj_report.warnings, ply_report.warnings);
+    const Mesh reference = built_by_add_face(obj);
+    EXPECT_EQ(face_lists(obj), face_lists(reference));
+    EXPECT_EQ(connectivity(obj), connectivity(reference));
+  }
+}
+
+TEST(MeshAssembly, EachDirtSoupIsRepairedAsItsDirtRequires) {
+  const auto soups = dirty_soups();
+  LoadReport report;
+  load_mesh_from_memory(obj_text(soups[0].soup), "flipped.obj", &report);
+  const std::size_t sphere_faces = soups[0].soup.faces.size() - 2;  // every third one flipped
+  EXPECT_EQ(report.faces_flipped, (sphere_faces + 2) / 3);
+  EXPECT_EQ(report.duplicate_faces_dropped, 1u);
+  EXPECT_EQ(report.degenerate_faces_dropped, 1u);
+  load_mesh_from_memory(obj_text(soups[1].soup), "fin.obj", &report);
+  EXPECT_EQ(report.faces_detached, 1u);
+  const Mesh touching = load_mesh_from_memory(obj_text(soups[2].soup), "touching.obj", &report);
+  EXPECT_EQ(report.vertices_split, 1u);
+  EXPECT_EQ(touching.n_vertices(), soups[2].soup.points.size() + 1);
+  EXPECT_EQ(touching.point(VertexHandle(static_cast<int>(touching.n_vertices()) - 1)),
+            touching.point(VertexHandle(0)));
+  const Mesh fans = load_mesh_from_memory(obj_text(soups[3].soup), "fans.obj", &report);
+  EXPECT_EQ(report.vertices_split, 0u);
+  EXPECT_EQ(find_holes(fans).size(), 1u);
+}
+
+}  // namespace
+}  // namespace holefill::testing
