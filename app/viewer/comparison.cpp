@@ -3,22 +3,22 @@
 namespace holefill::viewer {
 namespace {
 
-ComparisonSide fill_side(const Mesh& mesh, const Hole& hole, const FillOptions& options,
-                         std::string label) {
+ComparisonSide fill_side(const Mesh& mesh, const std::vector<const Hole*>& loops,
+                         const FillOptions& options, std::string label) {
   ComparisonSide side;
   side.label = std::move(label);
   side.options = options;
   side.mesh = mesh;
-  side.fill = fill_hole(side.mesh, hole, options);
+  side.fill = fill_joined_holes(side.mesh, loops, options);
   return side;
 }
 
 }  // namespace
 
-Comparison make_comparison(const Mesh& mesh, const Hole& hole, const FillOptions& options,
-                           CompareMode mode, bool triangulation_only) {
+Comparison make_comparison(const Mesh& mesh, const std::vector<const Hole*>& loops,
+                           const FillOptions& options, CompareMode mode, bool triangulation_only) {
   Comparison comparison;
-  comparison.hole_id = hole.id;
+  comparison.hole_id = loops.front()->id;
   comparison.mode = mode;
   FillOptions left = options, right = options;
   if (mode == CompareMode::Weights) {
@@ -32,8 +32,9 @@ Comparison make_comparison(const Mesh& mesh, const Hole& hole, const FillOptions
     right.smooth.method = SmoothMethod::Fair;
   }
   comparison.left =
-      fill_side(mesh, hole, left, mode == CompareMode::Weights ? "liepa" : "umbrella");
-  comparison.right = fill_side(mesh, hole, right, mode == CompareMode::Weights ? "maxmin" : "fair");
+      fill_side(mesh, loops, left, mode == CompareMode::Weights ? "liepa" : "umbrella");
+  comparison.right =
+      fill_side(mesh, loops, right, mode == CompareMode::Weights ? "maxmin" : "fair");
   return comparison;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "holefill/fill.h"
 
@@ -26,10 +27,12 @@ struct Comparison {
   ComparisonSide right;  // maxmin, or fair
 };
 
-// Fills `hole` of two copies of `mesh` with `options` but for what `mode` compares. Weights: with
-// triangulation_only, both stop after the triangulation stage. Smoothing: both run every stage
-// (the smoothing is what differs), with options.smooth's fairing settings on the right.
-Comparison make_comparison(const Mesh& mesh, const Hole& hole, const FillOptions& options,
-                           CompareMode mode, bool triangulation_only);
+// Fills the region `loops` bound (the hole first, then the loops filled with it: its islands, a
+// hole to bridge to; fill_joined_holes) on two copies of `mesh` with `options` but for what
+// `mode` compares. Weights: with triangulation_only, both stop after the triangulation stage.
+// Smoothing: both run every stage (the smoothing is what differs), with options.smooth's
+// fairing settings on the right. `loops` is not empty.
+Comparison make_comparison(const Mesh& mesh, const std::vector<const Hole*>& loops,
+                           const FillOptions& options, CompareMode mode, bool triangulation_only);
 
 }  // namespace holefill::viewer

@@ -221,28 +221,30 @@ bool Session::reset_selected() { return run(reset_request()); }
 bool Session::undo() { return run(undo_request()); }
 bool Session::redo() { return run(redo_request()); }
 
+LogChange Session::return_to(LogChange::Kind kind, const Snapshot& to) const {
+  return {kind,     to.log, to.selected, to.revision, options_of(to.log, to.selected, options_),
+          to.joined};
+}
+
 std::optional<LogChange> Session::undo_request() const {
   if (undo_.empty()) return std::nullopt;
-  const Snapshot& to = undo_.back();
-  return LogChange{LogChange::Kind::Undo, to.log, to.selected, to.revision,
-                   options_of(to.log, to.selected, options_)};
+  return return_to(LogChange::Kind::Undo, undo_.back());
 }
 
 std::optional<LogChange> Session::redo_request() const {
   if (redo_.empty()) return std::nullopt;
-  const Snapshot& to = redo_.back();
-  return LogChange{LogChange::Kind::Redo, to.log, to.selected, to.revision,
-                   options_of(to.log, to.selected, options_)};
+  return return_to(LogChange::Kind::Redo, redo_.back());
 }
 
 std::optional<LogChange> Session::reset_request() const {
   if (selected_ < 0 || !has_steps(selected_)) return std::nullopt;
-  return LogChange{LogChange::Kind::Reset, without_hole(log_, selected_), selected_, 0, options_};
+  return LogChange{
+      LogChange::Kind::Reset, without_hole(log_, selected_), selected_, 0, options_, {}};
 }
 
 std::optional<LogChange> Session::options_request(const FillOptions& options) const {
   if (selected_ < 0 || !has_steps(selected_) || options == options_) return std::nullopt;
-  LogChange change{LogChange::Kind::Options, log_, selected_, 0, options};
+  LogChange change{LogChange::Kind::Options, log_, selected_, 0, options, {}};
   for (auto& step : change.log) {
     if (step.hole_id == selected_) step = make_step(selected_, step.joined, options);
   }
@@ -254,7 +256,7 @@ std::optional<LogChange> Session::keep_request(bool right) const {
   FillOptions options = (right ? comparison_->right : comparison_->left).options;
   const Stage last = options.last_stage;
   options.last_stage = options_.last_stage;
-  LogChange change{LogChange::Kind::Keep, without_hole(log_, selected_), selected_, 0, options};
+  LogChange change{LogChange::Kind::Keep, without_hole(log_, selected_), selected_, 0, options, {}};
   for (int stage = 1; stage <= static_cast<int>(last); ++stage)
     change.log.push_back(make_step(selected_, joined_, options));
   return change;
@@ -270,12 +272,12 @@ void Session::apply(ChangeResult result) {
   LogChange& change = result.change;
   switch (change.kind) {
     case LogChange::Kind::Undo:
-      redo_.push_back({std::move(log_), selected_, revision_});
+      redo_.push_back({std::move(log_), selected_, joined_, revision_});
       undo_.pop_back();
       revision_ = change.revision;
       break;
     case LogChange::Kind::Redo:
-      undo_.push_back({std::move(log_), selected_, revision_});
+      undo_.push_back({std::move(log_), selected_, joined_, revision_});
       redo_.pop_back();
       revision_ = change.revision;
       break;
@@ -296,6 +298,12 @@ void Session::apply(ChangeResult result) {
   selected_ = change.selected;
   options_ = change.options;
   take(std::move(result.rebuilt.state), std::move(result.rebuilt.checkpoints));
+  // Undo and redo bring back the loops shift-click had selected with an unfilled hole (a filled
+  // one's are those its steps closed).
+  if (change.joined && selected_ >= 0 && !has_steps(selected_)) {
+    joined_ = std::move(*change.joined);
+    selection_changed();
+  }
 }
 
 const std::map<int, std::size_t>& Session::mesh_valences() {
@@ -325,8 +333,8 @@ void Session::set_compare_mode(CompareMode mode) {
 
 std::optional<ComparisonRequest> Session::comparison_request() const {
   if (!compare_ || selected_ < 0 || comparison_made_ == comparison_wanted_) return std::nullopt;
-  return ComparisonRequest{selected_, options_, compare_mode_, compare_triangulation_only_,
-                           comparison_wanted_};
+  return ComparisonRequest{
+      selected_, joined_, options_, compare_mode_, compare_triangulation_only_, comparison_wanted_};
 }
 
 std::optional<ComparisonResult> Session::compute(const ComparisonRequest& request,
@@ -335,10 +343,11 @@ std::optional<ComparisonResult> Session::compute(const ComparisonRequest& reques
   const auto before = rebuild(loaded_, holes_, without_hole(log_, request.hole_id), request.hole_id,
                               checkpoints_, progress);
   if (!before || (progress && progress->cancelled())) return std::nullopt;
-  return ComparisonResult{
-      make_comparison(before->state.mesh, holes_[request.hole_id], request.options, request.mode,
-                      request.triangulation_only),
-      request.generation};
+  std::vector<const Hole*> loops{&holes_[request.hole_id]};
+  for (const int id : request.joined) loops.push_back(&holes_[id]);
+  return ComparisonResult{make_comparison(before->state.mesh, loops, request.options, request.mode,
+                                          request.triangulation_only),
+                          request.generation};
 }
 
 void Session::apply(ComparisonResult result) {
@@ -359,7 +368,7 @@ const Comparison* Session::comparison() {
 }
 
 void Session::remember() {
-  undo_.push_back({log_, selected_, revision_});
+  undo_.push_back({log_, selected_, joined_, revision_});
   if (undo_.size() > kHistoryLimit) undo_.erase(undo_.begin());
   redo_.clear();
   last_change_was_options_ = false;

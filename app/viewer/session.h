@@ -65,6 +65,8 @@ struct LogChange {
   int selected = -1;
   std::uint64_t revision = 0;  // undo, redo: the revision of that state
   FillOptions options;         // the options the session shows afterwards
+  // Undo, redo: the loops selected with `selected` then (shift-click), restored with it.
+  std::optional<std::vector<int>> joined;
 };
 
 struct ChangeResult {
@@ -75,6 +77,7 @@ struct ChangeResult {
 // A comparison to make (Session::comparison_request), and what it made.
 struct ComparisonRequest {
   int hole_id = -1;
+  std::vector<int> joined;  // the loops filled with it (Session::joined)
   FillOptions options;
   CompareMode mode = CompareMode::Weights;
   bool triangulation_only = false;
@@ -224,10 +227,13 @@ class Session {
   struct Snapshot {
     std::vector<FillStep> log;
     int selected = -1;
+    std::vector<int> joined;
     std::uint64_t revision = 0;
   };
 
   void remember();
+  // Undo or redo to the state `to`.
+  LogChange return_to(LogChange::Kind kind, const Snapshot& to) const;
   void take(MeshState state, Checkpoints checkpoints);
   bool run(const std::optional<FillRequest>& request);
   bool run(const std::optional<LogChange>& change);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "comparison.h"
 #include "hole_table.h"
 #include "holefill/stats.h"
 #include "island_meshes.h"
@@ -150,6 +151,63 @@ TEST(Selection, LoopsTooFarApartAreNotBridged) {
   session.select(0);
   ASSERT_TRUE(session.toggle(1));
   EXPECT_NE(session.bridge_problem().find("apart"), std::string::npos) << session.bridge_problem();
+}
+
+// The comparison fills the region the selection bounds, islands included, as Fill does: each
+// side is the core's fill of the whole mesh with that side's weight.
+TEST(Selection, CompareFillsTheHoleWithItsIslands) {
+  Session session = session_of(sphere_with_island());
+  session.select(0);
+  session.set_compare(true);
+  const Comparison* comparison = session.comparison();
+  ASSERT_NE(comparison, nullptr);
+  for (const auto* side : {&comparison->left, &comparison->right}) {
+    EXPECT_EQ(side->fill.joined_holes, std::vector<int>{1}) << side->label;
+    Mesh direct = sphere_with_island();
+    fill_holes(direct, find_holes(direct), side->options);
+    EXPECT_TRUE(same_mesh(side->mesh, direct)) << side->label;
+    expect_one_closed_sphere(side->mesh);
+  }
+  // With the island taken out of the selection, it stays open on both sides.
+  ASSERT_TRUE(session.toggle(1));
+  comparison = session.comparison();
+  ASSERT_NE(comparison, nullptr);
+  for (const auto* side : {&comparison->left, &comparison->right}) {
+    const auto holes = find_holes(side->mesh);
+    ASSERT_EQ(holes.size(), 1u) << side->label;
+    EXPECT_EQ(holes[0].size(), session.holes()[1].size());
+  }
+}
+
+// Undo and redo bring back what shift-click had selected: the loops to bridge, or a hole
+// without its island.
+TEST(Selection, UndoRestoresTheShiftClickedSelection) {
+  Session session = session_of(capsule_cut_in_two());
+  session.select(0);
+  ASSERT_TRUE(session.toggle(1));
+  ASSERT_TRUE(session.fill_selected());
+  ASSERT_TRUE(session.undo());
+  EXPECT_EQ(session.selected(), 0);
+  EXPECT_EQ(session.joined(), std::vector<int>{1});
+  EXPECT_EQ(session.bridge_problem(), "");
+  ASSERT_TRUE(session.redo());
+  EXPECT_EQ(session.fill(0).joined_holes, std::vector<int>{1});
+  expect_one_closed_sphere(session.mesh());
+
+  Session island = session_of(sphere_with_island());
+  island.select(0);
+  ASSERT_TRUE(island.toggle(1));  // the island out
+  ASSERT_TRUE(island.fill_selected());
+  ASSERT_TRUE(island.undo());
+  EXPECT_EQ(island.selected(), 0);
+  EXPECT_TRUE(island.joined().empty());
+  // The selection before it is remembered with each step back: undoing from a hole selected
+  // since brings back the one the fill was made on.
+  ASSERT_TRUE(island.redo());
+  island.select(1);
+  ASSERT_TRUE(island.undo());
+  EXPECT_EQ(island.selected(), 0);
+  EXPECT_TRUE(island.joined().empty());
 }
 
 }  // namespace
