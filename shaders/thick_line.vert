@@ -12,12 +12,21 @@ uniform mat4 u_projection;
 uniform vec2 u_viewport;     // pixels
 uniform float u_width;       // pixels
 uniform float u_depth_bias;  // world units toward the eye
+// Pixels toward the eye, as world lengths at each point's depth (u_pixel_size: the world length
+// of a pixel at depth 1): the quad reaches u_width / 2 pixels beside the loop, over surface that
+// near a silhouette rises toward the eye far faster than the flat bias covers, and would cut the
+// outline into dashes.
+uniform float u_pixel_bias;
+uniform float u_pixel_size;
 
 flat out int v_hole;
 
 vec4 project(vec3 position) {
   vec4 view_position = u_view * vec4(position, 1.0);
-  view_position.xyz += normalize(-view_position.xyz) * u_depth_bias;
+  float depth = -view_position.z;
+  float bias = u_depth_bias + u_pixel_bias * u_pixel_size * depth;
+  // Never to the eye's side of the near plane: at most half the way to the eye.
+  view_position.xyz += normalize(-view_position.xyz) * min(bias, 0.5 * depth);
   return u_projection * view_position;
 }
 

@@ -21,6 +21,10 @@ glm::mat4 Camera::projection() const {
   return glm::perspective(fov_, viewport_.x / viewport_.y, near_plane, far_plane);
 }
 
+float Camera::pixel_size_at_unit_depth() const {
+  return 2.0f * std::tan(0.5f * fov_) / viewport_.y;
+}
+
 glm::vec3 Camera::eye() const { return target_ + rotation_ * glm::vec3(0.0f, 0.0f, distance_); }
 
 glm::vec3 Camera::arcball_point(const glm::vec2& cursor) const {

@@ -41,6 +41,9 @@ class Camera {
   void frame(const glm::vec3& center, const glm::vec3& from, float radius);
 
   float vertical_fov() const { return fov_; }
+  // The world length one pixel of the viewport spans at view depth 1 (at depth d: d times it),
+  // so that shaders can size offsets in pixels wherever a point lies.
+  float pixel_size_at_unit_depth() const;
 
  private:
   glm::vec3 arcball_point(const glm::vec2& cursor) const;

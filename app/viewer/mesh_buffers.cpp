@@ -32,8 +32,8 @@ MeshBuffers::MeshBuffers() {
   glGenVertexArrays(1, &vao_);
   glGenVertexArrays(1, &edges_vao_);
   glGenVertexArrays(1, &points_vao_);
-  GLuint buffers[7];
-  glGenBuffers(7, buffers);
+  GLuint buffers[8];
+  glGenBuffers(8, buffers);
   positions_ = buffers[0];
   normals_ = buffers[1];
   triangles_ = buffers[2];
@@ -41,6 +41,7 @@ MeshBuffers::MeshBuffers() {
   points_ = buffers[4];
   stages_ = buffers[5];
   colors_ = buffers[6];
+  edge_lengths_ = buffers[7];
   glGenTextures(1, &stages_texture_);
 
   glBindVertexArray(vao_);
@@ -51,6 +52,9 @@ MeshBuffers::MeshBuffers() {
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangles_);
   glBindVertexArray(edges_vao_);
   vec3_attribute(0, positions_);
+  glBindBuffer(GL_ARRAY_BUFFER, edge_lengths_);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, sizeof(float), nullptr);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edges_);
   glBindVertexArray(points_vao_);
   vec3_attribute(0, positions_);
@@ -59,8 +63,9 @@ MeshBuffers::MeshBuffers() {
 }
 
 MeshBuffers::~MeshBuffers() {
-  const GLuint buffers[] = {positions_, normals_, triangles_, edges_, points_, stages_, colors_};
-  glDeleteBuffers(7, buffers);
+  const GLuint buffers[] = {positions_, normals_, triangles_, edges_,
+                            points_,    stages_,  colors_,    edge_lengths_};
+  glDeleteBuffers(8, buffers);
   glDeleteTextures(1, &stages_texture_);
   const GLuint arrays[] = {vao_, edges_vao_, points_vao_};
   glDeleteVertexArrays(3, arrays);
@@ -71,6 +76,7 @@ void MeshBuffers::upload(const SurfaceArrays& arrays) {
   fill_buffer(GL_ARRAY_BUFFER, positions_, arrays.positions);
   fill_buffer(GL_ARRAY_BUFFER, normals_, arrays.normals);
   fill_buffer(GL_ARRAY_BUFFER, colors_, arrays.colors);
+  fill_buffer(GL_ARRAY_BUFFER, edge_lengths_, arrays.vertex_edge_lengths);
   glBindVertexArray(vao_);
   has_colors_ = !arrays.colors.empty();
   if (has_colors_) {

@@ -25,7 +25,7 @@ class MeshBuffers {
 
  private:
   GLuint vao_ = 0, positions_ = 0, normals_ = 0, triangles_ = 0;
-  GLuint edges_vao_ = 0, edges_ = 0;
+  GLuint edges_vao_ = 0, edges_ = 0, edge_lengths_ = 0;
   GLuint points_vao_ = 0, points_ = 0;
   GLuint stages_ = 0, stages_texture_ = 0;
   GLuint colors_ = 0;

@@ -7,6 +7,12 @@
 namespace holefill::viewer {
 namespace {
 
+// How far, in pixels, outlines are drawn toward the eye (thick_line.vert): enough for a loop on
+// a silhouette, where the surface beside it rises steeply toward the eye, to stay whole.
+constexpr float kOutlinePixelBias = 24.0f;
+// Wireframe lines closer than [0] pixels apart are not drawn, from [1] apart fully.
+constexpr float kWireframeFadePixels[2] = {2.5f, 8.0f};
+
 glm::vec3 rgb(const palette::Rgb& c) { return glm::vec3(c[0], c[1], c[2]) / 255.0f; }
 glm::vec4 rgba(const palette::Rgb& c) { return glm::vec4(rgb(c), 1.0f); }
 
@@ -121,11 +127,23 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
   solid_program_.set("u_view", view);
   solid_program_.set("u_projection", projection);
   solid_program_.set("u_depth_bias", 0.0f);
+  solid_program_.set("u_pixel_size", camera.pixel_size_at_unit_depth());
   if (display.wireframe) {
+    // Lines fade out where they run closer than a few pixels apart (solid.vert); faint lines
+    // leave the depth buffer to the surface.
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
     solid_program_.set("u_round", 0);
+    solid_program_.set("u_fade", 1);
+    solid_program_.set("u_fade_pixels",
+                       glm::vec2(kWireframeFadePixels[0], kWireframeFadePixels[1]));
     solid_program_.set("u_color", rgba(palette::kWireframe));
     layer.surface.draw_edges();
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
   }
+  solid_program_.set("u_fade", 0);
   if (display.patch_vertices) {
     glEnable(GL_PROGRAM_POINT_SIZE);
     solid_program_.set("u_round", 1);
@@ -145,6 +163,8 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
   line_program_.set("u_viewport", glm::vec2(rect.width, rect.height));
   line_program_.set("u_width", 5.0f);
   line_program_.set("u_depth_bias", bias);
+  line_program_.set("u_pixel_size", camera.pixel_size_at_unit_depth());
+  line_program_.set("u_pixel_bias", kOutlinePixelBias);
   line_program_.set("u_selected", highlight.selected);
   const int joined = std::min<int>(static_cast<int>(highlight.joined->size()), kMaxJoined);
   line_program_.set("u_joined_count", joined);

@@ -75,10 +75,22 @@ SurfaceArrays surface_arrays(const Mesh& mesh, const std::vector<const HoleFill*
   if (edges > 0) arrays.patch_edge_length = static_cast<float>(edge_lengths / edges);
 
   arrays.edges.reserve(2 * mesh.n_edges());
+  arrays.vertex_edge_lengths.assign(n_vertices, 0.0f);
+  std::vector<std::uint32_t> valence(n_vertices, 0);
   for (const auto e : mesh.edges()) {
     const auto h = mesh.halfedge_handle(e, 0);
-    arrays.edges.push_back(static_cast<std::uint32_t>(mesh.from_vertex_handle(h).idx()));
-    arrays.edges.push_back(static_cast<std::uint32_t>(mesh.to_vertex_handle(h).idx()));
+    const auto a = static_cast<std::uint32_t>(mesh.from_vertex_handle(h).idx());
+    const auto b = static_cast<std::uint32_t>(mesh.to_vertex_handle(h).idx());
+    arrays.edges.push_back(a);
+    arrays.edges.push_back(b);
+    const float length = glm::length(arrays.positions[a] - arrays.positions[b]);
+    arrays.vertex_edge_lengths[a] += length;
+    arrays.vertex_edge_lengths[b] += length;
+    ++valence[a];
+    ++valence[b];
+  }
+  for (std::size_t v = 0; v < n_vertices; ++v) {
+    if (valence[v] > 0) arrays.vertex_edge_lengths[v] /= static_cast<float>(valence[v]);
   }
   return arrays;
 }

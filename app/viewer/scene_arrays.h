@@ -13,11 +13,14 @@ namespace holefill::viewer {
 
 struct SurfaceArrays {
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;             // area-weighted vertex normals
-  std::vector<glm::vec4> colors;              // the file's vertex colours (alpha 1), or empty
-  std::vector<std::uint32_t> triangles;       // 3 per face, in face order
-  std::vector<std::uint8_t> face_stages;      // Stage per face (Original outside patches)
-  std::vector<std::uint32_t> edges;           // 2 per edge, for the wireframe
+  std::vector<glm::vec3> normals;         // area-weighted vertex normals
+  std::vector<glm::vec4> colors;          // the file's vertex colours (alpha 1), or empty
+  std::vector<std::uint32_t> triangles;   // 3 per face, in face order
+  std::vector<std::uint8_t> face_stages;  // Stage per face (Original outside patches)
+  std::vector<std::uint32_t> edges;       // 2 per edge, for the wireframe
+  // Per vertex, the mean length of its edges (0 for an isolated vertex): how far apart the
+  // wireframe's lines run there, which the shader turns into pixels to fade it where dense.
+  std::vector<float> vertex_edge_lengths;
   std::vector<std::uint32_t> patch_vertices;  // vertices the patches added
   float patch_edge_length = 0.0f;             // mean length of their edges (0: none), for dot sizes
   glm::vec3 lo{0.0f};

@@ -90,5 +90,23 @@ TEST(Camera, FrameLooksAtThePointFromTheGivenSide) {
   EXPECT_NEAR(direction.x, 1.0f, 1e-4f);
 }
 
+// The outline shader sizes its depth offset in pixels with this: a step of depth * size across
+// the view direction, at any depth, moves a point one pixel on screen.
+TEST(Camera, PixelSizeAtUnitDepthSpansOnePixelAtEveryDepth) {
+  Camera camera = fitted();
+  camera.frame({1.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, 0.5f);
+  const glm::vec3 right = glm::normalize(glm::vec3(glm::inverse(camera.view())[0]));
+  const glm::vec3 forward = glm::normalize(camera.target() - camera.eye());
+  for (const float scale : {0.5f, 1.0f, 2.0f, 4.0f}) {
+    const float depth = scale * camera.distance();
+    const glm::vec3 point = camera.eye() + depth * forward;
+    const glm::vec3 beside = point + depth * camera.pixel_size_at_unit_depth() * right;
+    const auto a = project_to_screen(pick_view(camera), point);
+    const auto b = project_to_screen(pick_view(camera), beside);
+    ASSERT_TRUE(a && b);
+    EXPECT_NEAR(glm::length(glm::vec2(*b) - glm::vec2(*a)), 1.0f, 1e-3f) << "at depth " << depth;
+  }
+}
+
 }  // namespace
 }  // namespace holefill::viewer
