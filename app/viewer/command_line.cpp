@@ -74,6 +74,10 @@ void add_options(CLI::App& app, Parsed& parsed) {
   app.add_option("--screenshot", c.screenshot, "render, save the window as PNG and exit")
       ->type_name("OUT.png")
       ->group(kScripted);
+  app.add_option("--ui-scale", c.ui_scale,
+                 "text and panel scale (default: the monitor's;\nCtrl +/- change it)")
+      ->type_name("S")
+      ->check(CLI::Range(0.5f, 4.0f));
   app.add_option("--frames", c.frames,
                  "with --screenshot: render N frames (turning the view\na little each) and print "
                  "the mean frame time")

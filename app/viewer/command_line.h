@@ -29,6 +29,7 @@ struct CommandLine {
   std::filesystem::path screenshot;  // set: render, save this PNG and exit
   int frames = 4;                    // frames scripted mode renders before the screenshot
   bool report_frame_time = false;    // print the mean frame time (set by --frames)
+  float ui_scale = 0.0f;             // the panel's scale; 0: the monitor's content scale
   bool help = false;
   bool version = false;
 };

@@ -10,6 +10,7 @@
 
 #include "holefill/io.h"
 #include "shortcuts.h"
+#include "widgets.h"
 
 namespace holefill::viewer {
 namespace {
@@ -95,7 +96,7 @@ void accept(FileActions& files, BuiltinDialog& dialog, bool save) {
 }
 
 void folder_listing(FileActions& files, BuiltinDialog& dialog, bool save) {
-  ImGui::BeginChild("entries", ImVec2(520.0f, 260.0f), true);
+  ImGui::BeginChild("entries", ImVec2(scaled(520.0f), scaled(260.0f)), true);
   if (dialog.folder.has_parent_path() && dialog.folder != dialog.folder.root_path()) {
     if (ImGui::Selectable("[..]")) show_folder(dialog, dialog.folder.parent_path(), save);
   }
@@ -128,7 +129,7 @@ void builtin_file_dialog(FileActions& files, BuiltinDialog& dialog, const FrameK
   ImGui::TextDisabled("%s", dialog.folder.string().c_str());
   folder_listing(files, dialog, save);
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  ImGui::SetNextItemWidth(520.0f);
+  ImGui::SetNextItemWidth(scaled(520.0f));
   ImGui::InputTextWithHint("##name", save ? "file name (.obj .off .ply .stl)" : "file name or path",
                            &dialog.name);
   if (ImGui::Button(save ? "Save (Enter)" : "Open (Enter)") || keys.pressed(kKeyEnter))
@@ -161,7 +162,7 @@ void draw_file_modals(FileActions& files, BuiltinDialog& dialog, bool builtin,
 
 void draw_progress(Worker& worker, const FrameKeys& keys, float left, float right, float bottom) {
   if (!worker.busy()) return;
-  const float width = std::min(420.0f, right - left - 20.0f);
+  const float width = std::min(scaled(420.0f), right - left - 20.0f);
   ImGui::SetNextWindowPos(ImVec2(0.5f * (left + right), bottom - 20.0f), ImGuiCond_Always,
                           ImVec2(0.5f, 1.0f));
   ImGui::SetNextWindowSize(ImVec2(width, 0.0f));
@@ -183,6 +184,7 @@ void draw_help(bool& showing, const FrameKeys& keys) {
   if (!begin_modal(kHelp)) return;
   if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
     for (const auto& shortcut : shortcuts()) {
+      if (!shortcut.keys) continue;
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(shortcut.keys);
       ImGui::TableNextColumn();

@@ -81,7 +81,7 @@ void hole_table(Session& session, UiState& ui, const std::vector<HoleRow>& rows)
   // The list follows a hole picked in the 3D view.
   const bool follow = session.selected() != ui.listed_selection;
   ui.listed_selection = session.selected();
-  const float height = 5.0f * ImGui::GetTextLineHeightWithSpacing() + 6.0f;
+  const float height = 5.0f * ImGui::GetTextLineHeightWithSpacing() + scaled(6.0f);
   if (!ImGui::BeginTable("holes", 5,
                          ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
                              ImGuiTableFlags_BordersOuter | ImGuiTableFlags_Sortable,
@@ -91,10 +91,10 @@ void hole_table(Session& session, UiState& ui, const std::vector<HoleRow>& rows)
   ImGui::TableSetupScrollFreeze(0, 1);
   ImGui::TableSetupColumn("hole",
                           ImGuiTableColumnFlags_DefaultSort | ImGuiTableColumnFlags_WidthFixed,
-                          40.0f, static_cast<ImGuiID>(HoleColumn::Id));
+                          scaled(40.0f), static_cast<ImGuiID>(HoleColumn::Id));
   ImGui::TableSetupColumn(
-      "edges", ImGuiTableColumnFlags_PreferSortDescending | ImGuiTableColumnFlags_WidthFixed, 48.0f,
-      static_cast<ImGuiID>(HoleColumn::Edges));
+      "edges", ImGuiTableColumnFlags_PreferSortDescending | ImGuiTableColumnFlags_WidthFixed,
+      scaled(48.0f), static_cast<ImGuiID>(HoleColumn::Edges));
   ImGui::TableSetupColumn("perimeter", ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
                           static_cast<ImGuiID>(HoleColumn::Perimeter));
   ImGui::TableSetupColumn("area", ImGuiTableColumnFlags_PreferSortDescending, 0.0f,

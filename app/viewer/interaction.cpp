@@ -124,9 +124,10 @@ void Interaction::handle(const InputEvent& event, const SceneArea& scene, bool u
       if (!ui_wants_mouse && scene.contains(event.cursor)) camera.zoom(event.scroll, local);
       break;
     case InputEvent::Kind::Key:
-      // A screenshot is taken whatever has the keyboard, so dialogs can be shown too.
+      // A screenshot is taken whatever has the keyboard, so dialogs can be shown too; the text
+      // size changes whatever has it.
       if (const auto command = command_for_key(event.key, event.control, event.shift)) {
-        if (!ui_wants_keyboard || *command == Command::Screenshot) run(*command, camera, session);
+        if (!ui_wants_keyboard || works_anywhere(*command)) run(*command, camera, session);
       }
       break;
     case InputEvent::Kind::Drop:

@@ -7,7 +7,9 @@
 #include <epoxy/gl.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -25,6 +27,7 @@
 #include "renderer.h"
 #include "screenshot.h"
 #include "session.h"
+#include "ui_style.h"
 #include "window.h"
 #include "worker.h"
 
@@ -162,14 +165,31 @@ void carry_out(const hv::Request& request, hv::FileActions& files, hv::Session& 
     case hv::Command::Screenshot:
       ui.take_screenshot = true;
       break;
+    case hv::Command::ZoomIn:
+    case hv::Command::ZoomOut:
+    case hv::Command::ZoomReset:
+      ui.zoom = hv::zoom_after(ui.zoom, *request.command);
+      session.tell({"Text size " + std::to_string(std::lround(100.0f * hv::zoom_factor(ui.zoom))) +
+                        " % (Ctrl +, Ctrl -, Ctrl 0)",
+                    false});
+      break;
     default:
       break;
   }
 }
 
-hv::SceneArea scene_area(const hv::Window& window) {
+hv::SceneArea scene_area(const hv::Window& window, const hv::UiScale& scale) {
   const glm::vec2 size = window.size();
-  return {{hv::kPanelWidth, 0.0f}, {std::max(size.x - hv::kPanelWidth, 1.0f), size.y}};
+  const float panel = std::min(scale.panel_width(), size.x - 1.0f);
+  return {{panel, 0.0f}, {std::max(size.x - panel, 1.0f), size.y}};
+}
+
+// Draws the panel at the scale the monitor and the user's zoom ask for, when it changed.
+void update_ui_scale(hv::UiState& ui) {
+  const hv::UiScale wanted = hv::ui_scale(ui.content_scale, ui.zoom);
+  if (wanted == ui.scale) return;
+  ui.scale = wanted;
+  hv::apply_ui_scale(wanted);
 }
 
 hv::PixelRect to_framebuffer(const hv::SceneArea& area, const hv::Window& window) {
@@ -186,6 +206,7 @@ void save_screenshot(const hv::Renderer& renderer, const hv::Window& window,
 }
 
 int run(const hv::CommandLine& command, const char* executable) {
+  const auto started = std::chrono::steady_clock::now();
   hv::Session session;
   hv::FileActions files(session);
   hv::Worker worker;
@@ -225,9 +246,11 @@ int run(const hv::CommandLine& command, const char* executable) {
       session.tell({"Busy: wait for the work in progress or cancel it.", true});
   });
   hv::UiState ui;
+  ui.content_scale = command.ui_scale > 0.0f ? command.ui_scale : window.content_scale();
+  hv::apply_ui_scale(ui.scale = hv::ui_scale(ui.content_scale, ui.zoom));
   FileDialogs dialogs;
   hv::BuiltinDialog builtin_dialog;
-  camera.set_viewport(scene_area(window).size);
+  camera.set_viewport(scene_area(window, ui.scale).size);
   files.take_mesh_opened();
   mesh_opened(camera, session, ui);
   if (session.selected() >= 0) hv::frame_hole(camera, session, session.selected());
@@ -258,7 +281,7 @@ int run(const hv::CommandLine& command, const char* executable) {
     }
     // The comparison is made on the worker too, whenever it is out of date and nothing runs.
     if (!scripted) hv::start_comparison(worker, session);
-    const hv::SceneArea area = scene_area(window);
+    const hv::SceneArea area = scene_area(window, ui.scale);
     camera.set_viewport(area.size);
     hv::FrameKeys keys;
     for (const auto& event : window.poll()) {
@@ -272,6 +295,7 @@ int run(const hv::CommandLine& command, const char* executable) {
     for (const auto& request : interaction.take_requests())
       carry_out(request, files, session, worker, ui);
     dialogs.update(files);
+    update_ui_scale(ui);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -317,6 +341,12 @@ int run(const hv::CommandLine& command, const char* executable) {
         std::fprintf(stderr, "holefill-viewer: %s\n", error.what());
         session.tell({std::string("Could not save the screenshot: ") + error.what(), true});
       }
+    }
+    if (command.report_frame_time && frame == 0) {
+      glFinish();
+      const std::chrono::duration<double, std::milli> first =
+          std::chrono::steady_clock::now() - started;
+      std::printf("first frame: %.0f ms after start (reading the mesh included)\n", first.count());
     }
     if (command.report_frame_time && frame == 1) timer_start = std::chrono::steady_clock::now();
     if (command.report_frame_time && frame >= 1) {

@@ -47,10 +47,12 @@ void histogram(const char* id, const std::map<int, std::size_t>& valences, float
     const float left = origin.x + slot * static_cast<float>(i);
     const bool over =
         hovered && ImGui::GetIO().MousePos.x >= left && ImGui::GetIO().MousePos.x < left + slot;
-    const float bar = static_cast<float>(bar_height(bins[i].count, most, log)) * (height - 4.0f);
+    const float bar =
+        static_cast<float>(bar_height(bins[i].count, most, log)) * (height - scaled(4.0f));
     if (bins[i].count > 0) {
       draw->AddRectFilled(
-          ImVec2(left + 2.0f, base - std::max(bar, 1.0f)), ImVec2(left + slot - 2.0f, base),
+          ImVec2(left + scaled(2.0f), base - std::max(bar, 1.0f)),
+          ImVec2(left + slot - scaled(2.0f), base),
           ImGui::GetColorU32(over ? ImGuiCol_PlotHistogramHovered : ImGuiCol_PlotHistogram));
     }
     const float label_width = ImGui::CalcTextSize(bins[i].label).x;
@@ -97,7 +99,7 @@ void patch_statistics(int hole_id, const HoleFill& fill, bool log_valences) {
   if (!fill.smoothing_note.empty()) ImGui::TextWrapped("%s", fill.smoothing_note.c_str());
   if (s.new_vertices == 0) return;
   ImGui::TextUnformatted("Valences of the patch's new vertices");
-  histogram("##patch_valences", s.valence_histogram, 30.0f, log_valences);
+  histogram("##patch_valences", s.valence_histogram, scaled(30.0f), log_valences);
 }
 
 void file_section(Session& session, FileActions& files, UiState& ui) {
@@ -145,7 +147,7 @@ struct SliderEdit {
 
 // The tau slider with a tick at sqrt(2), where Liepa's default sits.
 bool tau_slider(float& tau, SliderEdit& edit) {
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 70.0f);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - scaled(70.0f));
   edit.after_item(ImGui::SliderFloat("##tau", &tau, 1.0f, 2.0f, "tau = %.3f"));
   tooltip(
       "Refinement density: a triangle is split while tau times the distance from its centroid "
@@ -154,9 +156,9 @@ bool tau_slider(float& tau, SliderEdit& edit) {
   const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
   const float grab = ImGui::GetStyle().GrabMinSize;
   const float x = lo.x + grab * 0.5f + (kSqrt2 - 1.0f) * (hi.x - lo.x - grab);
-  ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, lo.y + 5.0f),
+  ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, lo.y + scaled(5.0f)),
                                       IM_COL32(255, 220, 90, 255), 2.0f);
-  ImGui::GetWindowDrawList()->AddLine(ImVec2(x, hi.y - 5.0f), ImVec2(x, hi.y),
+  ImGui::GetWindowDrawList()->AddLine(ImVec2(x, hi.y - scaled(5.0f)), ImVec2(x, hi.y),
                                       IM_COL32(255, 220, 90, 255), 2.0f);
   ImGui::SameLine();
   if (ImGui::Button("sqrt 2")) {
@@ -176,7 +178,7 @@ void options_section(Session& session, Worker& worker, UiState& ui) {
   bool changed = false;
   SliderEdit slider;
   const WeightKind kinds[] = {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area};
-  ImGui::SetNextItemWidth(150.0f);
+  ImGui::SetNextItemWidth(scaled(150.0f));
   if (ImGui::BeginCombo("weight", to_string(options.triangulate.weight).c_str())) {
     for (const auto kind : kinds) {
       if (ImGui::Selectable(to_string(kind).c_str(), kind == options.triangulate.weight)) {
@@ -199,7 +201,7 @@ void options_section(Session& session, Worker& worker, UiState& ui) {
   // 0: umbrella; 1, 2: fairing of order 2 (bi-Laplacian) or 3 (tri-Laplacian).
   const bool fair = options.smooth.method == SmoothMethod::Fair;
   int method = fair ? options.smooth.fair.order - 1 : 0;
-  ImGui::SetNextItemWidth(150.0f);
+  ImGui::SetNextItemWidth(scaled(150.0f));
   if (ImGui::Combo("smoothing", &method, "umbrella (paper)\0fair (order 2)\0fair (order 3)\0")) {
     options.smooth.method = method > 0 ? SmoothMethod::Fair : SmoothMethod::Umbrella;
     if (method > 0) options.smooth.fair.order = method + 1;
@@ -211,11 +213,11 @@ void options_section(Session& session, Worker& worker, UiState& ui) {
         "(order 3) fairing that continues the surrounding curvature");
   }
   ImGui::BeginDisabled(fair);  // the umbrella operator's own settings
-  ImGui::SetNextItemWidth(150.0f);
+  ImGui::SetNextItemWidth(scaled(150.0f));
   slider.after_item(ImGui::SliderInt("smoothing iterations", &options.smooth.iterations, 0, 100));
   tooltip("Umbrella smoothing: how many times each new vertex moves toward its neighbours' mean");
   float step = static_cast<float>(options.smooth.step);
-  ImGui::SetNextItemWidth(150.0f);
+  ImGui::SetNextItemWidth(scaled(150.0f));
   const bool stepped = ImGui::SliderFloat("smoothing step", &step, 0.05f, 1.0f, "%.2f");
   slider.after_item(stepped);
   tooltip("Umbrella smoothing: the share of the way toward the mean each iteration moves");
@@ -264,7 +266,7 @@ void step_section(Session& session, Worker& worker, UiState& ui) {
       "for you to fill one by one), on a worker: Cancel leaves the mesh as it was "
       "(Ctrl+F)");
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(90.0f);
+  ImGui::SetNextItemWidth(scaled(90.0f));
   if (ImGui::InputInt("edges##limit", &ui.fill_all_max_edges, 10, 100))
     ui.fill_all_max_edges = std::max(ui.fill_all_max_edges, 0);
   tooltip(
@@ -296,7 +298,7 @@ void statistics_section(Session& session, UiState& ui) {
   ImGui::SameLine();
   ImGui::Checkbox("log", &ui.log_valences);
   tooltip("Bar heights on a log scale, so that rare valences of a big mesh stay visible");
-  histogram("##mesh_valences", session.mesh_valences(), 30.0f, ui.log_valences);
+  histogram("##mesh_valences", session.mesh_valences(), scaled(30.0f), ui.log_valences);
 }
 
 void comparison_section(Session& session, Worker& worker, const UiState& ui) {
@@ -304,7 +306,7 @@ void comparison_section(Session& session, Worker& worker, const UiState& ui) {
   if (ImGui::Checkbox("Compare", &compare)) session.set_compare(compare);
   ImGui::SameLine();
   int mode = session.compare_mode() == CompareMode::Weights ? 0 : 1;
-  ImGui::SetNextItemWidth(125.0f);
+  ImGui::SetNextItemWidth(scaled(125.0f));
   if (ImGui::Combo("##compare_mode", &mode, "liepa | maxmin\0umbrella | fair\0")) {
     session.set_compare_mode(mode == 0 ? CompareMode::Weights : CompareMode::Smoothing);
   }
@@ -322,30 +324,37 @@ void comparison_section(Session& session, Worker& worker, const UiState& ui) {
                                                : "Making the comparison...");
     return;
   }
-  if (ImGui::BeginTable("compare", 2, ImGuiTableFlags_BordersInnerV)) {
-    for (const ComparisonSide* side : {&comparison->left, &comparison->right}) {
-      ImGui::TableNextColumn();
-      ImGui::PushID(side == &comparison->left ? "left" : "right");
-      ImGui::Text("%s (%s)", side->label.c_str(), side == &comparison->left ? "left" : "right");
-      const PatchStats& s = side->fill.stats;
-      if (side->fill.failed()) {
-        ImGui::TextColored(kErrorColor, "failed");
-      } else {
-        ImGui::Text("+%zu vertices, +%zu faces", s.new_vertices, s.new_faces);
-        ImGui::Text("min angle %.2f", s.min_angle_deg);
-        ImGui::Text("max dihedral %.2f", s.max_dihedral_deg);
-        ImGui::Text("area %.4g", s.area);
-      }
-      histogram("##valences", s.valence_histogram, 30.0f, ui.log_valences);
-      const bool right = side == &comparison->right;
-      ImGui::BeginDisabled(worker.busy() || side->fill.failed());
-      if (ImGui::Button("Keep this")) start_change(worker, session, session.keep_request(right));
-      ImGui::EndDisabled();
-      tooltip("Fill the hole with this side's options (they become the current ones)");
-      ImGui::PopID();
+  if (!ImGui::BeginTable("compare", 2, ImGuiTableFlags_BordersInnerV)) return;
+  const ComparisonSide* sides[] = {&comparison->left, &comparison->right};
+  for (const ComparisonSide* side : sides) {
+    ImGui::TableNextColumn();
+    ImGui::PushID(side == &comparison->left ? "left" : "right");
+    ImGui::Text("%s (%s)", side->label.c_str(), side == &comparison->left ? "left" : "right");
+    const PatchStats& s = side->fill.stats;
+    if (side->fill.failed()) {
+      ImGui::TextColored(kErrorColor, "failed");
+    } else {
+      ImGui::Text("+%zu vertices, +%zu faces", s.new_vertices, s.new_faces);
+      ImGui::Text("min angle %.2f", s.min_angle_deg);
+      ImGui::Text("max dihedral %.2f", s.max_dihedral_deg);
+      ImGui::Text("area %.4g", s.area);
     }
-    ImGui::EndTable();
+    histogram("##valences", s.valence_histogram, scaled(30.0f), ui.log_valences);
+    ImGui::PopID();
   }
+  // The buttons on a row of their own: a cell that ends with a framed widget lowers the next
+  // cell's first line by the frame's padding (ImGui aligns a row's text baselines).
+  for (const ComparisonSide* side : sides) {
+    ImGui::TableNextColumn();
+    ImGui::PushID(side == &comparison->left ? "left" : "right");
+    ImGui::BeginDisabled(worker.busy() || side->fill.failed());
+    if (ImGui::Button("Keep this"))
+      start_change(worker, session, session.keep_request(side == &comparison->right));
+    ImGui::EndDisabled();
+    tooltip("Fill the hole with this side's options (they become the current ones)");
+    ImGui::PopID();
+  }
+  ImGui::EndTable();
 }
 
 void legend() {
@@ -372,7 +381,7 @@ void display_section(UiState& ui) {
   ImGui::Checkbox("flat shading", &ui.display.flat);
   ImGui::SameLine();
   ImGui::Checkbox("new vertices", &ui.display.patch_vertices);
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 100.0f);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - scaled(100.0f));
   ImGui::InputText("##screenshot", &ui.screenshot_path);
   ImGui::SameLine();
   if (ImGui::Button("Screenshot")) ui.take_screenshot = true;
@@ -387,14 +396,18 @@ void draw_comparison_labels(Session& session, float left, float right, float top
   const float half = 0.5f * (right - left);
   for (const ComparisonSide* side : {&comparison->left, &comparison->right}) {
     const float start = side == &comparison->left ? left : left + half;
+    // On one line where the half is wide enough, else the name above the result.
     char text[96];
-    std::snprintf(text, sizeof text, "%s: %s, %zu new vertices", side->label.c_str(),
-                  side->fill.failed() ? "failed" : to_string(side->fill.stage()),
-                  side->fill.stats.new_vertices);
+    for (const char* separator : {": ", ":\n"}) {
+      std::snprintf(text, sizeof text, "%s%s%s, %zu new vertices", side->label.c_str(), separator,
+                    side->fill.failed() ? "failed" : to_string(side->fill.stage()),
+                    side->fill.stats.new_vertices);
+      if (ImGui::CalcTextSize(text).x + scaled(24.0f) <= half) break;
+    }
     const ImVec2 size = ImGui::CalcTextSize(text);
-    const ImVec2 at(start + 0.5f * (half - size.x), top + 8.0f);
-    draw->AddRectFilled(ImVec2(at.x - 6.0f, at.y - 3.0f),
-                        ImVec2(at.x + size.x + 6.0f, at.y + size.y + 3.0f),
+    const ImVec2 at(start + 0.5f * (half - size.x), top + scaled(8.0f));
+    draw->AddRectFilled(ImVec2(at.x - scaled(6.0f), at.y - scaled(3.0f)),
+                        ImVec2(at.x + size.x + scaled(6.0f), at.y + size.y + scaled(3.0f)),
                         IM_COL32(20, 22, 28, 220), 4.0f);
     draw->AddText(at, ImGui::GetColorU32(ImGuiCol_Text), text);
   }
@@ -403,7 +416,7 @@ void draw_comparison_labels(Session& session, float left, float right, float top
 void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& ui,
                  float window_height) {
   ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
-  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, window_height));
+  ImGui::SetNextWindowSize(ImVec2(ui.scale.panel_width(), window_height));
   ImGui::Begin("holefill", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   file_section(session, files, ui);

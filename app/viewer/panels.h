@@ -12,6 +12,7 @@
 #include "file_actions.h"
 #include "hole_table.h"
 #include "session.h"
+#include "ui_scale.h"
 #include "worker.h"
 
 namespace holefill::viewer {
@@ -34,6 +35,9 @@ struct UiState {
   int listed_selection = -1;   // the selection the list last showed (it scrolls to a new one)
   bool log_valences = false;   // valence charts on a log scale
   int compared_hole = -1;      // the hole the comparison showed last frame (framed when new)
+  float content_scale = 1.0f;  // the monitor's (or --ui-scale)
+  UiZoom zoom;                 // Ctrl +, Ctrl -, Ctrl 0
+  UiScale scale;               // what the panel is drawn at: ui_scale(content_scale, zoom)
   std::string shown_notice;    // the session's message as last drawn, and since when
   double notice_since = 0.0;
 };

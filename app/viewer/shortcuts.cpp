@@ -24,11 +24,20 @@ constexpr Shortcut kShortcuts[] = {
     {Command::Bridge, 'B', false, false, "B", "bridge the two selected loops (shift-click)"},
     {Command::Help, kKeyF1, false, false, "F1", "this help"},
     {Command::Screenshot, kKeyF12, false, false, "F12", "save a screenshot"},
+    {Command::ZoomIn, '+', true, false, "Ctrl + or Ctrl =", "larger text and panel"},
+    {Command::ZoomIn, '+', true, true, nullptr, "the same where + takes Shift"},
+    {Command::ZoomOut, '-', true, false, "Ctrl -", "smaller text and panel"},
+    {Command::ZoomReset, '0', true, false, "Ctrl 0", "text at the screen's own size"},
 };
 
 }  // namespace
 
 std::span<const Shortcut> shortcuts() { return kShortcuts; }
+
+bool works_anywhere(Command command) {
+  return command == Command::Screenshot || command == Command::ZoomIn ||
+         command == Command::ZoomOut || command == Command::ZoomReset;
+}
 
 std::optional<Command> command_for_key(int key, bool control, bool shift) {
   const auto found = std::find_if(std::begin(kShortcuts), std::end(kShortcuts), [&](const auto& s) {

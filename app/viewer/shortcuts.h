@@ -22,6 +22,9 @@ enum class Command {
   Bridge,
   Help,
   Screenshot,
+  ZoomIn,     // the panel's text larger
+  ZoomOut,    // smaller
+  ZoomReset,  // the monitor's own size
 };
 
 struct Shortcut {
@@ -29,11 +32,15 @@ struct Shortcut {
   int key;  // an upper-case letter or a Key code (events.h)
   bool control = false;
   bool shift = false;
-  const char* keys;  // as the help shows it
+  const char* keys;  // as the help shows it; nullptr: not listed (a variant of the line above)
   const char* what;
 };
 
 std::span<const Shortcut> shortcuts();
+
+// Whether `command` works whatever has the keyboard (a text field, a dialog): screenshots and
+// the text size.
+bool works_anywhere(Command command);
 
 // The command bound to `key` with these modifiers, if any.
 std::optional<Command> command_for_key(int key, bool control, bool shift);

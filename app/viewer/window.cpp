@@ -61,6 +61,12 @@ struct WindowCallbacks {
       e.key = kKeyF1;
     else if (key == GLFW_KEY_F12)
       e.key = kKeyF12;
+    else if (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD)
+      e.key = '+';
+    else if (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT)
+      e.key = '-';
+    else if (key == GLFW_KEY_0 || key == GLFW_KEY_KP_0)
+      e.key = '0';
     else
       return;
     window.events_.push_back(e);
@@ -125,6 +131,12 @@ glm::ivec2 Window::framebuffer_size() const {
   glm::ivec2 size;
   glfwGetFramebufferSize(window_, &size.x, &size.y);
   return size;
+}
+
+float Window::content_scale() const {
+  float x = 1.0f, y = 1.0f;
+  glfwGetWindowContentScale(window_, &x, &y);
+  return x;
 }
 
 }  // namespace holefill::viewer

@@ -30,6 +30,8 @@ class Window {
   void swap();
   glm::ivec2 size() const;              // window pixels (cursor coordinates)
   glm::ivec2 framebuffer_size() const;  // GL pixels
+  // The monitor's content scale (1 on a plain screen, 1.5 or 2 on a HiDPI one).
+  float content_scale() const;
 
  private:
   GLFWwindow* window_ = nullptr;

@@ -11,8 +11,8 @@
 #include <memory>
 #include <string>
 
-#include "display.h"
 #include "palette.h"
+#include "ui_scale.h"
 
 namespace palette = holefill::viewer::palette;
 
@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "png_check: cannot read %s: %s\n", argv[1], stbi_failure_reason());
     return 2;
   }
-  const int scene_x = static_cast<int>(holefill::viewer::kPanelWidth);
+  const int scene_x = static_cast<int>(holefill::viewer::kPanelWidth);  // at scale 1 (Xvfb)
   const std::string check = argv[2];
   std::printf("%s: %dx%d\n", argv[1], image.width, image.height);
   if (check == "selected-present" || check == "selected-absent") {

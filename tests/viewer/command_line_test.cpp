@@ -25,6 +25,8 @@ TEST(CommandLine, ScriptedModeOptions) {
   EXPECT_TRUE(quality.remesh && quality.fair);
   EXPECT_EQ(quality.fair_order, 2);
   EXPECT_EQ(parse_command_line({"--fair-order", "3"}).fair_order, 3);
+  EXPECT_FLOAT_EQ(parse_command_line({}).ui_scale, 0.0f);  // the monitor's
+  EXPECT_FLOAT_EQ(parse_command_line({"--ui-scale", "1.5"}).ui_scale, 1.5f);
   const CommandLine smoothing = parse_command_line({"--select-hole", "0", "--compare-smoothing"});
   EXPECT_TRUE(smoothing.compare && smoothing.compare_smoothing);
 }
@@ -37,6 +39,7 @@ TEST(CommandLine, RejectsWhatItCannotDo) {
   EXPECT_THROW(parse_command_line({"a.obj", "b.obj"}), std::invalid_argument);
   EXPECT_THROW(parse_command_line({"--bogus"}), std::invalid_argument);
   EXPECT_THROW(parse_command_line({"--fair-order", "4"}), std::invalid_argument);
+  EXPECT_THROW(parse_command_line({"--ui-scale", "9"}), std::invalid_argument);
   EXPECT_TRUE(parse_command_line({"--help"}).help);
 }
 

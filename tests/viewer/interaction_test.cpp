@@ -164,11 +164,26 @@ TEST(Shortcuts, EveryKeyCombinationMeansOneCommand) {
     for (std::size_t j = i + 1; j < table.size(); ++j) {
       EXPECT_FALSE(table[i].key == table[j].key && table[i].control == table[j].control &&
                    table[i].shift == table[j].shift)
-          << table[i].keys << " and " << table[j].keys;
+          << "shortcuts " << i << " and " << j;
     }
     EXPECT_EQ(command_for_key(table[i].key, table[i].control, table[i].shift), table[i].command);
   }
   EXPECT_FALSE(command_for_key('S', false, false));  // a plain S is not Save
+}
+
+// The text size changes while a text field has the keyboard; other shortcuts wait.
+TEST(Shortcuts, TextSizeKeysWorkWhateverHasTheKeyboard) {
+  Scene scene;
+  for (const auto& event : {key_event('+', true), key_event('+', true, true), key_event('-', true),
+                            key_event('0', true), key_event('Z', true)}) {
+    scene.interaction.handle(event, kArea, false, true, scene.camera, scene.session);
+  }
+  const auto requests = scene.interaction.take_requests();
+  ASSERT_EQ(requests.size(), 4u);
+  EXPECT_EQ(requests[0].command, Command::ZoomIn);
+  EXPECT_EQ(requests[1].command, Command::ZoomIn);
+  EXPECT_EQ(requests[2].command, Command::ZoomOut);
+  EXPECT_EQ(requests[3].command, Command::ZoomReset);
 }
 
 TEST(Interaction, TheComparisonViewPicksInTheListOnly) {
