@@ -37,7 +37,7 @@ void stage_on_asset(benchmark::State& state, Stage last) {
   std::vector<HoleFill> prepared_fills(holes.size());
   for (std::size_t h = 0; h < holes.size(); ++h) {
     while (static_cast<int>(prepared_fills[h].stage()) + 1 < static_cast<int>(last) &&
-           advance(prepared, holes[h], prepared_fills[h], options)) {
+           advance(prepared, holes[h], prepared_fills[h], options) == StageRun::Ran) {
     }
   }
   std::size_t new_vertices = 0;
@@ -80,7 +80,7 @@ void stage_scaling(benchmark::State& state, Stage last) {
   Mesh prepared = original;
   HoleFill prepared_fill;
   while (static_cast<int>(prepared_fill.stage()) + 1 < static_cast<int>(last) &&
-         advance(prepared, *hole, prepared_fill, options)) {
+         advance(prepared, *hole, prepared_fill, options) == StageRun::Ran) {
   }
   double total_seconds = 0.0;
   for (auto _ : state) {

@@ -98,7 +98,8 @@ bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& 
   options.triangulate.progress = progress;
   std::vector<const Hole*> loops{&holes[step.hole_id]};
   for (const int id : step.joined) loops.push_back(&holes[id]);
-  const bool ran = advance_joined(state.mesh, loops, state.fills[step.hole_id], options);
+  const bool ran =
+      advance_joined(state.mesh, loops, state.fills[step.hole_id], options) == StageRun::Ran;
   if (followed) checkpoints->steps.push_back(step);
   return ran;
 }

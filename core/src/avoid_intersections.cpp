@@ -3,6 +3,7 @@
 #include <optional>
 #include <set>
 
+#include "hole_triangulation.h"
 #include "patch_intersections.h"
 
 namespace holefill::detail {

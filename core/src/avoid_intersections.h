@@ -9,6 +9,7 @@
 #pragma once
 
 #include "face_grid.h"
+#include "hole_triangulation.h"
 #include "holefill/fill.h"
 
 namespace holefill::detail {

@@ -11,6 +11,8 @@
 #include <unordered_set>
 
 #include "dp_step.h"
+#include "geometry.h"
+#include "hole_triangulation.h"
 
 namespace holefill {
 namespace {
@@ -54,7 +56,7 @@ double bridge_dihedral(const HolePolygon& polygon, const Hole& joined,
     const auto one = normal_of_directed_edge.find({a.idx(), b.idx()});
     const auto other = normal_of_directed_edge.find({b.idx(), a.idx()});
     if (one != normal_of_directed_edge.end() && other != normal_of_directed_edge.end()) {
-      largest = std::max(largest, angle_between_normals(one->second, other->second));
+      largest = std::max(largest, geometry::angle_between_normals(one->second, other->second));
     }
   }
   return largest;

@@ -9,6 +9,7 @@
 
 #include "geometry.h"
 #include "holefill/triangulate.h"
+#include "weight_keys.h"
 
 namespace holefill::detail {
 

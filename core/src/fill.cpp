@@ -11,6 +11,7 @@
 
 #include "avoid_intersections.h"
 #include "face_grid.h"
+#include "hole_triangulation.h"
 #include "holefill/attributes.h"
 #include "holefill/loop_groups.h"
 #include "patch_intersections.h"
@@ -160,15 +161,15 @@ void smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
 
 // advance(), with the triangulation already planned when `plan` is given, and the faces outside
 // the patch indexed when `index` is.
-bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options,
-                  const PlannedTriangulation* plan, const detail::FaceGrid* index) {
+StageRun advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options,
+                      const PlannedTriangulation* plan, const detail::FaceGrid* index) {
   fill.hole_id = hole.id;
   fill.boundary_edges = hole.size();
-  if (fill.failed()) return false;
+  if (fill.failed()) return StageRun::Failed;
   switch (fill.stage()) {
     case Stage::Original:
       // The patch is born Stage::Triangulated.
-      if (!triangulate_stage(mesh, hole, fill, options, plan, index)) return false;
+      if (!triangulate_stage(mesh, hole, fill, options, plan, index)) return StageRun::Failed;
       break;
     case Stage::Triangulated:
       refine_stage(mesh, fill, options, index);
@@ -179,19 +180,19 @@ bool advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOption
       fill.patch.stage = Stage::Smoothed;
       break;
     case Stage::Smoothed:
-      return false;
+      return StageRun::AllDone;
   }
   // Colours, normals, UVs, materials ... of the new elements.
   fill.attributes_note = interpolate_patch_attributes(mesh, fill.patch);
   fill.stats = patch_stats(mesh, fill.patch);
-  return true;
+  return StageRun::Ran;
 }
 
 HoleFill fill_planned(Mesh& mesh, const Hole& hole, const FillOptions& options,
                       const PlannedTriangulation* plan, const detail::FaceGrid* index) {
   HoleFill fill;
   while (fill.stage() < options.last_stage &&
-         advance_with(mesh, hole, fill, options, plan, index)) {
+         advance_with(mesh, hole, fill, options, plan, index) == StageRun::Ran) {
   }
   return fill;
 }
@@ -290,7 +291,7 @@ std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch) {
   return count_intersections(mesh, patch, nullptr);
 }
 
-bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options) {
+StageRun advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options) {
   const auto [advanced, scaled] = at_safe_scale(
       mesh, [&] { return advance_with(mesh, hole, fill, options, nullptr, nullptr); });
   if (scaled) measure_again(mesh, fill);
@@ -312,13 +313,14 @@ bool HoleSelection::includes(const Hole& hole) const {
 HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
                            const FillOptions& options) {
   HoleFill fill;
-  while (fill.stage() < options.last_stage && advance_joined(mesh, loops, fill, options)) {
+  while (fill.stage() < options.last_stage &&
+         advance_joined(mesh, loops, fill, options) == StageRun::Ran) {
   }
   return fill;
 }
 
-bool advance_joined(Mesh& mesh, const std::vector<const Hole*>& loops, HoleFill& fill,
-                    const FillOptions& options) {
+StageRun advance_joined(Mesh& mesh, const std::vector<const Hole*>& loops, HoleFill& fill,
+                        const FillOptions& options) {
   if (loops.size() == 1) return advance(mesh, *loops.front(), fill, options);
   const auto [advanced, scaled] = at_safe_scale(mesh, [&] {
     if (fill.stage() != Stage::Original || fill.failed()) {

@@ -1,5 +1,4 @@
-// Small triangle geometry the library's stages share (internal; the public measure of a triangle
-// is measure_triangle in holefill/triangulate.h).
+// Small triangle geometry the library's stages share (internal).
 #pragma once
 
 #include <algorithm>
@@ -32,5 +31,21 @@ inline Point unit_normal(const Point& a, const Point& b, const Point& c) {
   const double length = n.norm();
   return length > 0.0 ? n / length : Point(0.0, 0.0, 0.0);
 }
+
+// What measure_triangle reports of one triangle (exact, in radians).
+struct TriangleMeasures {
+  double min_angle = 0.0;     // the triangle's smallest interior angle
+  double max_dihedral = 0.0;  // largest angle between its normal and its neighbours'
+  double area = 0.0;
+  bool degenerate = false;
+};
+
+// The measures of triangle (a, b, c) that the weights use, except its dihedral angle (and its
+// smallest angle, left 0, when with_min_angle is false: only maxmin needs the atan2).
+TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c,
+                                  bool with_min_angle = true);
+
+// Angle between two unit normals, radians; pi when either is zero (unknown orientation).
+double angle_between_normals(const Point& n1, const Point& n2);
 
 }  // namespace holefill::geometry

@@ -238,7 +238,7 @@ void assign(IslandMap& map, const std::vector<Loop>& loops, int island,
   const std::string problem = "hole " + std::to_string(island) + " lies inside holes " +
                               id_list(containers) +
                               " (an island of two holes): which one it belongs to is ambiguous; "
-                              "fill with --islands off, or choose the holes with --holes";
+                              "fill with island detection off, or choose which holes to fill";
   add_problem(map, island, problem);
   for (const int outer : containers) add_problem(map, outer, problem);
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "hole_triangulation.h"
+
 namespace holefill {
 namespace {
 
@@ -48,7 +50,7 @@ std::string bridge_problem(const Mesh& mesh, const std::vector<Hole>& holes,
     if (islands.outer[hole] >= 0 && islands.outer[hole] != (hole == a ? b : a)) {
       return "hole " + std::to_string(hole) + " is an island of hole " +
              std::to_string(islands.outer[hole]) +
-             " and is filled with it; bridge with --islands off";
+             " and is filled with it; bridge them with island detection off";
     }
   }
   const double distance = gap(mesh, holes[a], holes[b]);

@@ -76,15 +76,16 @@ bool flip_keeps_shape(const Mesh& mesh, const FlipQuad& q, double max_dihedral) 
   const Point &a = mesh.point(q.a), &b = mesh.point(q.b), &c = mesh.point(q.c),
               &d = mesh.point(q.d);
   // Old triangles (a, b, c), (b, a, d); new ones (c, d, b) and (d, c, a).
-  if (measure_triangle(c, d, b, false).degenerate || measure_triangle(d, c, a, false).degenerate) {
+  if (geometry::measure_triangle(c, d, b, false).degenerate ||
+      geometry::measure_triangle(d, c, a, false).degenerate) {
     return false;
   }
   const Point old1 = geometry::area_normal(a, b, c), old2 = geometry::area_normal(b, a, d);
   const Point new1 = geometry::area_normal(c, d, b), new2 = geometry::area_normal(d, c, a);
   const Point old_sum = old1.normalized() + old2.normalized();
   if (OpenMesh::dot(new1, old_sum) <= 0.0 || OpenMesh::dot(new2, old_sum) <= 0.0) return false;
-  const double old_dihedral = angle_between_normals(old1.normalized(), old2.normalized());
-  const double new_dihedral = angle_between_normals(new1.normalized(), new2.normalized());
+  const double old_dihedral = geometry::angle_between_normals(old1.normalized(), old2.normalized());
+  const double new_dihedral = geometry::angle_between_normals(new1.normalized(), new2.normalized());
   if (new_dihedral > std::max(max_dihedral, old_dihedral)) return false;
   const double old_min = std::min(geometry::min_angle(a, b, c), geometry::min_angle(b, a, d));
   const double new_min = std::min(geometry::min_angle(c, d, b), geometry::min_angle(d, c, a));
@@ -212,7 +213,7 @@ class PatchRemesher {
       std::array<Point, 3> p;
       int c = 0;
       for (const auto u : mesh_.fv_range(f)) p[c++ % 3] = mesh_.point(u);
-      if (measure_triangle(p[0], p[1], p[2], false).degenerate) return false;
+      if (geometry::measure_triangle(p[0], p[1], p[2], false).degenerate) return false;
       if (OpenMesh::dot(geometry::area_normal(p[0], p[1], p[2]), before[i++]) <= 0.0) return false;
     }
     return true;

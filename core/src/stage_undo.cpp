@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "geometry.h"
 #include "holefill/triangulate.h"
 
 namespace holefill::detail {
@@ -39,7 +40,7 @@ bool has_degenerate_face(const Mesh& mesh, const Patch& patch) {
     std::array<Point, 3> p;
     int c = 0;
     for (const auto v : mesh.fv_range(f)) p[c++ % 3] = mesh.point(v);
-    if (measure_triangle(p[0], p[1], p[2], false).degenerate) return true;
+    if (geometry::measure_triangle(p[0], p[1], p[2], false).degenerate) return true;
   }
   return false;
 }

@@ -5,6 +5,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "geometry.h"
 #include "holefill/triangulate.h"
 
 namespace holefill {
@@ -25,7 +26,7 @@ PatchStats patch_stats(const Mesh& mesh, const Patch& patch) {
     const Point& a = mesh.point(*fv);
     const Point& b = mesh.point(*++fv);
     const Point& c = mesh.point(*++fv);
-    const TriangleMeasures m = measure_triangle(a, b, c);
+    const geometry::TriangleMeasures m = geometry::measure_triangle(a, b, c);
     min_angle = std::min(min_angle, m.min_angle);
     angle_sum += m.min_angle;
     stats.area += m.area;
@@ -38,7 +39,8 @@ PatchStats patch_stats(const Mesh& mesh, const Patch& patch) {
     const auto f0 = mesh.face_handle(mesh.halfedge_handle(e, 0));
     const auto f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
     max_dihedral = std::max(
-        max_dihedral, angle_between_normals(mesh.calc_face_normal(f0), mesh.calc_face_normal(f1)));
+        max_dihedral,
+        geometry::angle_between_normals(mesh.calc_face_normal(f0), mesh.calc_face_normal(f1)));
   }
   stats.min_angle_deg = min_angle * kDegrees;
   stats.mean_min_angle_deg =

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "geometry.h"
 #include "holefill/triangulate.h"
 
 namespace holefill::detail {
@@ -120,7 +121,7 @@ bool segment_enters_triangle(const Point& s0, const Point& s1, const Triangle3& 
 std::optional<Triangle3> triangle_from(const std::array<Point, 3>& corners, double scale) {
   Triangle3 t;
   for (int c = 0; c < 3; ++c) t.corner[c] = corners[c] * scale;
-  if (measure_triangle(t.corner[0], t.corner[1], t.corner[2], false).degenerate) {
+  if (geometry::measure_triangle(t.corner[0], t.corner[1], t.corner[2], false).degenerate) {
     return std::nullopt;
   }
   t.normal = OpenMesh::cross(t.corner[1] - t.corner[0], t.corner[2] - t.corner[0]).normalized();

@@ -34,9 +34,9 @@ bool parse_weight(const std::string& text, WeightKind& kind) {
   return false;
 }
 
-TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c,
-                                  bool with_min_angle) {
-  TriangleMeasures t;
+geometry::TriangleMeasures geometry::measure_triangle(const Point& a, const Point& b,
+                                                      const Point& c, bool with_min_angle) {
+  geometry::TriangleMeasures t;
   const double twice_area = OpenMesh::cross(b - a, c - a).norm();
   t.area = 0.5 * twice_area;
   const detail::SmallestAngle angle = detail::smallest_angle(a, b, c, twice_area);
@@ -45,7 +45,7 @@ TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c
   return t;
 }
 
-double angle_between_normals(const Point& n1, const Point& n2) {
+double geometry::angle_between_normals(const Point& n1, const Point& n2) {
   if (is_zero(n1) || is_zero(n2)) return M_PI;
   return std::atan2(OpenMesh::cross(n1, n2).norm(), OpenMesh::dot(n1, n2));
 }
@@ -71,7 +71,7 @@ TriangulationQuality evaluate_triangulation(const HolePolygon& polygon,
   std::map<std::pair<int, int>, Point> first_normal_on_edge;
   for (const auto& t : triangles) {
     const Point &a = polygon.points[t[0]], &b = polygon.points[t[1]], &c = polygon.points[t[2]];
-    const TriangleMeasures m = measure_triangle(a, b, c);
+    const geometry::TriangleMeasures m = geometry::measure_triangle(a, b, c);
     q.area += m.area;
     q.degenerate += m.degenerate ? 1 : 0;
     q.min_angle = std::min(q.min_angle, m.min_angle);
@@ -82,13 +82,15 @@ TriangulationQuality evaluate_triangulation(const HolePolygon& polygon,
       if (boundary_edge) {
         const Point& outside = polygon.outside_normals[v == u + 1 ? u : n - 1];
         if (!is_zero(outside)) {
-          q.max_dihedral = std::max(q.max_dihedral, angle_between_normals(normal, outside));
+          q.max_dihedral =
+              std::max(q.max_dihedral, geometry::angle_between_normals(normal, outside));
         }
         continue;
       }
       const auto [it, inserted] = first_normal_on_edge.emplace(std::make_pair(u, v), normal);
       if (!inserted) {
-        q.max_dihedral = std::max(q.max_dihedral, angle_between_normals(normal, it->second));
+        q.max_dihedral =
+            std::max(q.max_dihedral, geometry::angle_between_normals(normal, it->second));
       }
     }
   }

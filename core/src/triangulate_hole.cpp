@@ -4,7 +4,7 @@
 #include <optional>
 #include <unordered_map>
 
-#include "holefill/triangulate.h"
+#include "hole_triangulation.h"
 #include "vertex_link.h"
 
 namespace holefill {
@@ -116,16 +116,16 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
     result.failure = "the hole has " + std::to_string(hole.size()) +
                      " boundary edges, more than the dynamic program can index (at most " +
                      std::to_string(kMaxPolygonSize - 1) +
-                     ", the restricted search for large holes included); leave it out with "
-                     "--max-boundary";
+                     ", the restricted search for large holes included); leave it out of the "
+                     "selection by a limit on boundary edges";
     return result;
   }
   if (hole.size() > kMaxFullSearchEdges && !restricted) {
     result.failure = "the hole has " + std::to_string(hole.size()) +
                      " boundary edges, too many for the full dynamic program (at most " +
                      std::to_string(std::min(kMaxFullSearchEdges, kMaxPolygonSize - 1)) +
-                     ": its time grows with the cube of the edge count); leave it out with "
-                     "--max-boundary";
+                     ": its time grows with the cube of the edge count); leave it out of the "
+                     "selection by a limit on boundary edges";
     return result;
   }
   std::unordered_map<int, int> seen;
@@ -201,11 +201,6 @@ TriangulateHoleResult apply_triangulation(Mesh& mesh, const Hole& hole,
   }
   result.patch = std::move(patch);
   return result;
-}
-
-TriangulateHoleResult triangulate_hole(Mesh& mesh, const Hole& hole,
-                                       const TriangulateOptions& options) {
-  return apply_triangulation(mesh, hole, plan_triangulation(mesh, hole, options));
 }
 
 }  // namespace holefill

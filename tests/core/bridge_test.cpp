@@ -116,10 +116,11 @@ TEST(Bridge, AdvancingJoinedLoopsStageByStageMakesWhatFillHolesMakes) {
   Mesh stepped = before;
   HoleFill fill;
   for (const Stage stage : {Stage::Triangulated, Stage::Refined, Stage::Smoothed}) {
-    ASSERT_TRUE(advance_joined(stepped, {&holes[0], &holes[1]}, fill, {})) << fill.failure;
+    ASSERT_EQ(advance_joined(stepped, {&holes[0], &holes[1]}, fill, {}), StageRun::Ran)
+        << fill.failure;
     EXPECT_EQ(fill.stage(), stage);
   }
-  EXPECT_FALSE(advance_joined(stepped, {&holes[0], &holes[1]}, fill, {}));
+  EXPECT_EQ(advance_joined(stepped, {&holes[0], &holes[1]}, fill, {}), StageRun::AllDone);
   EXPECT_EQ(fill.joined_holes, std::vector<int>{1});
   EXPECT_EQ(fill.boundary_edges, holes[0].size() + holes[1].size());
   Mesh direct = before;

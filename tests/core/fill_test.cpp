@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -21,17 +22,8 @@ using testing::is_oriented_manifold;
 using testing::make_grid;
 using testing::make_icosphere;
 using testing::original_part_unchanged;
+using testing::sphere_with_two_holes;
 using testing::without_faces;
-
-// A sphere with a wavy cap cut out, and a second, small hole elsewhere.
-Mesh sphere_with_two_holes() {
-  return without_faces(make_icosphere(3), [](const Point& c) {
-    const double angle = std::atan2(c[1], c[0]);
-    const bool cap = c[2] > 0.55 + 0.12 * std::sin(5.0 * angle);
-    const bool small = (c - Point(0.0, 0.0, -1.0)).norm() < 0.25;
-    return cap || small;
-  });
-}
 
 class FillEveryWeight : public ::testing::TestWithParam<WeightKind> {};
 
@@ -86,19 +78,49 @@ TEST(Fill, StepsThroughTheStagesInOrder) {
   const auto holes = find_holes(mesh);
   HoleFill fill;
   const FillOptions options;
-  ASSERT_TRUE(advance(mesh, holes[0], fill, options));
+  ASSERT_EQ(advance(mesh, holes[0], fill, options), StageRun::Ran);
   EXPECT_EQ(fill.stage(), Stage::Triangulated);
   EXPECT_EQ(fill.stats.new_faces, holes[0].size() - 2);  // a polygon's triangulation
   EXPECT_EQ(fill.stats.new_vertices, 0u);
-  ASSERT_TRUE(advance(mesh, holes[0], fill, options));
+  ASSERT_EQ(advance(mesh, holes[0], fill, options), StageRun::Ran);
   EXPECT_EQ(fill.stage(), Stage::Refined);
   EXPECT_GT(fill.stats.new_vertices, 0u);
   // Each new interior vertex adds two faces to a disk's triangulation.
   EXPECT_EQ(fill.stats.new_faces, holes[0].size() - 2 + 2 * fill.stats.new_vertices);
-  ASSERT_TRUE(advance(mesh, holes[0], fill, options));
+  ASSERT_EQ(advance(mesh, holes[0], fill, options), StageRun::Ran);
   EXPECT_EQ(fill.stage(), Stage::Smoothed);
-  EXPECT_FALSE(advance(mesh, holes[0], fill, options));
+  const std::size_t faces = mesh.n_faces();
+  EXPECT_EQ(advance(mesh, holes[0], fill, options), StageRun::AllDone);
+  EXPECT_EQ(mesh.n_faces(), faces);
   EXPECT_FALSE(fill.failed());
+}
+
+TEST(Fill, AStageThatCannotRunSaysFailedEveryTimeAndLeavesTheMesh) {
+  // A band whose inner rim runs out and back along one line through four points: every
+  // triangle across that hole has zero area, so its triangulation is refused.
+  Mesh mesh;
+  std::vector<VertexHandle> v;
+  for (const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(2, 0, 0), Point(3, 0, 0),
+                         Point(0, -1, 1), Point(1, -1, 1), Point(3, 1, 1), Point(0, 1, 1)}) {
+    v.push_back(mesh.add_vertex(p));
+  }
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    mesh.add_face(v[i], v[4 + i], v[4 + j]);
+    mesh.add_face(v[i], v[4 + j], v[j]);
+  }
+  const auto holes = find_holes(mesh);
+  const auto rim = std::find_if(holes.begin(), holes.end(),
+                                [](const Hole& h) { return h.vertices[0].idx() < 4; });
+  ASSERT_NE(rim, holes.end());
+  const Mesh before = mesh;
+  HoleFill fill;
+  EXPECT_EQ(advance(mesh, *rim, fill, FillOptions{}), StageRun::Failed);
+  EXPECT_TRUE(fill.failed());
+  EXPECT_EQ(fill.stage(), Stage::Original);
+  EXPECT_EQ(advance(mesh, *rim, fill, FillOptions{}), StageRun::Failed);
+  EXPECT_EQ(mesh.n_faces(), before.n_faces());
+  EXPECT_TRUE(original_part_unchanged(before, mesh));
 }
 
 TEST(Fill, AllHolesAtOnceGivesTheSameMeshAsOneByOne) {
@@ -164,169 +186,6 @@ TEST(Fill, FillsAPinchedLoopSoThatItsVertexBecomesManifold) {
   EXPECT_TRUE(is_oriented_manifold(mesh));  // vertex 0 included: each pass closed one gap
   EXPECT_FALSE(mesh.is_boundary(v[0]));
   EXPECT_TRUE(find_holes(mesh).empty());
-}
-
-TEST(Refine, PatchEdgesTrackTheSurroundingDensity) {
-  const Mesh before = sphere_with_two_holes();
-  const auto holes = find_holes(before);
-  Mesh mesh = before;
-  FillOptions options;
-  options.last_stage = Stage::Refined;
-  const HoleFill fill = fill_hole(mesh, holes[0], options);
-  ASSERT_FALSE(fill.failed());
-  double total = 0.0;
-  int count = 0;
-  for (const auto f : fill.patch.faces) {
-    for (const auto e : mesh.fe_range(f)) {
-      total += mesh.calc_edge_length(e);
-      ++count;
-    }
-  }
-  const double mean_patch_edge = total / count;
-  const double surrounding = holes[0].mean_surrounding_edge_length;
-  EXPECT_GT(mean_patch_edge, 0.7 * surrounding);
-  EXPECT_LT(mean_patch_edge, 1.5 * surrounding);
-}
-
-TEST(Refine, LargerTauNeverGivesFewerVertices) {
-  const Mesh before = sphere_with_two_holes();
-  const auto holes = find_holes(before);
-  std::size_t previous = 0;
-  for (const double tau : {0.8, 1.0, 1.2, std::sqrt(2.0), 1.7, 2.0}) {
-    Mesh mesh = before;
-    FillOptions options;
-    options.refine.tau = tau;
-    options.last_stage = Stage::Refined;
-    const HoleFill fill = fill_hole(mesh, holes[0], options);
-    EXPECT_GE(fill.stats.new_vertices, previous) << "tau = " << tau;
-    previous = fill.stats.new_vertices;
-  }
-  EXPECT_GT(previous, 0u);
-}
-
-// The relaxation's swap test against its definition written with angles: swap when the angles
-// opposite the edge sum to more than pi (by a 1e-9 margin) and the swap lowers that sum. Random
-// quads folded out of plane, and quads close to co-circular, where a shortcut could misjudge.
-TEST(Refine, SwapTestFollowsTheOppositeAngleRule) {
-  auto angle_at = [](const Point& corner, const Point& a, const Point& b) {
-    const Point u = a - corner, v = b - corner;
-    return std::atan2(OpenMesh::cross(u, v).norm(), OpenMesh::dot(u, v));
-  };
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  int swaps = 0;
-  for (int trial = 0; trial < 4000; ++trial) {
-    // a, b on the unit circle; c, d near it (exactly on it for some trials), lifted a little.
-    const double near = trial % 4 == 0 ? 0.0 : (trial % 4 == 1 ? 1e-9 : 0.3) * unit(rng);
-    auto on_circle = [&](double angle, double radius) {
-      const double lift = trial % 2 ? 0.2 * unit(rng) : 0.0;
-      return Point(radius * std::cos(angle), radius * std::sin(angle), lift);
-    };
-    const Point a = on_circle(M_PI * (0.5 + 0.4 * unit(rng)), 1.0);
-    const Point b = on_circle(-M_PI * (0.5 + 0.4 * unit(rng)), 1.0);
-    const Point c = on_circle(M_PI * (0.15 * unit(rng)), 1.0 + near);
-    const Point d = on_circle(M_PI * (1.0 + 0.15 * unit(rng)), 1.0 - near);
-    Mesh mesh;
-    const VertexHandle va = mesh.add_vertex(a), vb = mesh.add_vertex(b), vc = mesh.add_vertex(c),
-                       vd = mesh.add_vertex(d);
-    mesh.add_face(va, vc, vb);
-    mesh.add_face(vb, vd, va);
-    EdgeHandle shared;
-    for (const auto e : mesh.edges()) {
-      if (!mesh.is_boundary(e)) shared = e;
-    }
-    ASSERT_TRUE(shared.is_valid());
-    const double now = angle_at(c, a, b) + angle_at(d, a, b);
-    const double swapped = angle_at(a, c, d) + angle_at(b, c, d);
-    const bool expected = now > M_PI + 1e-9 && swapped < now - 1e-9;
-    EXPECT_EQ(should_swap_edge(mesh, shared), expected) << "trial " << trial;
-    swaps += expected;
-  }
-  EXPECT_GT(swaps, 500);  // both outcomes are exercised
-  EXPECT_LT(swaps, 3500);
-}
-
-// The sphere with its first hole filled up to refinement, ready to smooth.
-struct RefinedSphere {
-  Mesh before, mesh;
-  HoleFill fill;
-};
-RefinedSphere refined_sphere() {
-  RefinedSphere sphere{sphere_with_two_holes(), {}, {}};
-  sphere.mesh = sphere.before;
-  FillOptions options;
-  options.last_stage = Stage::Refined;
-  sphere.fill = fill_hole(sphere.mesh, find_holes(sphere.before)[0], options);
-  return sphere;
-}
-
-TEST(Smooth, LowersUmbrellaEnergyAndNeverMovesTheBoundary) {
-  auto [before, mesh, fill] = refined_sphere();
-  // Disturb the refined patch so there is something to smooth.
-  std::mt19937 rng(1);
-  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
-  for (const auto v : fill.patch.new_vertices) {
-    mesh.set_point(v, mesh.point(v) + Point(jitter(rng), jitter(rng), jitter(rng)));
-  }
-  const Mesh refined = mesh;
-  const double energy_before = umbrella_energy(mesh, fill.patch);
-  smooth_patch(mesh, fill.patch, SmoothOptions{});
-  EXPECT_LT(umbrella_energy(mesh, fill.patch), 0.5 * energy_before);
-  EXPECT_TRUE(original_part_unchanged(before, mesh));
-  for (const auto v : fill.patch.boundary) EXPECT_EQ(mesh.point(v), refined.point(v));
-}
-
-// The paper's operator written out on the mesh itself, P <- P + lambda (mean of neighbours - P),
-// all vertices at once: the flat-array smoother must give the same positions, bit for bit.
-TEST(Smooth, MatchesTheUmbrellaOperatorAppliedOnTheMesh) {
-  auto [before, mesh, fill] = refined_sphere();
-  ASSERT_GT(fill.patch.new_vertices.size(), 3u);
-  Mesh reference = mesh;
-  SmoothOptions smooth;
-  smooth.iterations = 7;
-  smooth.step = 0.3;
-  for (int it = 0; it < smooth.iterations; ++it) {
-    std::vector<Point> next;
-    for (const auto v : fill.patch.new_vertices) {
-      Point sum(0, 0, 0);
-      int count = 0;
-      for (const auto q : reference.vv_range(v)) {
-        sum += reference.point(q);
-        ++count;
-      }
-      next.push_back(reference.point(v) + smooth.step * (sum / count - reference.point(v)));
-    }
-    for (std::size_t i = 0; i < next.size(); ++i) {
-      reference.set_point(fill.patch.new_vertices[i], next[i]);
-    }
-  }
-  smooth_patch(mesh, fill.patch, smooth);
-  for (const auto v : mesh.vertices()) EXPECT_EQ(mesh.point(v), reference.point(v)) << v.idx();
-}
-
-// A vertex listed twice among the patch's new vertices moves once, as the operator says.
-TEST(Smooth, AVertexListedTwiceMovesOnce) {
-  auto [before, mesh, fill] = refined_sphere();
-  ASSERT_GT(fill.patch.new_vertices.size(), 2u);
-  Mesh twice = mesh;
-  Patch doubled = fill.patch;
-  doubled.new_vertices.push_back(doubled.new_vertices[1]);
-  smooth_patch(mesh, fill.patch);
-  smooth_patch(twice, doubled);
-  for (const auto v : mesh.vertices()) EXPECT_EQ(mesh.point(v), twice.point(v)) << v.idx();
-}
-
-// smooth_patch is the umbrella operator: asked for fairing it refuses, the mesh untouched, instead
-// of smoothing another way than asked; the stage is the pipeline's to advance.
-TEST(Smooth, AskedForFairingItRefusesAndLeavesTheStage) {
-  auto [before, mesh, fill] = refined_sphere();
-  const Mesh untouched = mesh;
-  SmoothOptions fairing;
-  fairing.method = SmoothMethod::Fair;
-  EXPECT_THROW(smooth_patch(mesh, fill.patch, fairing), std::invalid_argument);
-  for (const auto v : mesh.vertices()) EXPECT_EQ(mesh.point(v), untouched.point(v)) << v.idx();
-  smooth_patch(mesh, fill.patch);
-  EXPECT_EQ(fill.patch.stage, Stage::Refined);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "bound_scan.h"
 #include "holefill/triangulate.h"
 #include "test_meshes.h"
+#include "weight_keys.h"
 
 namespace holefill {
 namespace {

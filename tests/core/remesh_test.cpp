@@ -10,6 +10,7 @@
 #include <set>
 #include <utility>
 
+#include "geometry.h"
 #include "holefill/fill.h"
 #include "holefill/holes.h"
 #include "holefill/triangulate.h"
@@ -83,7 +84,7 @@ std::size_t degenerate_faces(const Mesh& mesh, const Patch& patch) {
     const Point& a = mesh.point(*fv);
     const Point& b = mesh.point(*++fv);
     const Point& c = mesh.point(*++fv);
-    count += measure_triangle(a, b, c, false).degenerate;
+    count += geometry::measure_triangle(a, b, c, false).degenerate;
   }
   return count;
 }

@@ -9,6 +9,7 @@
 #include <random>
 #include <set>
 
+#include "geometry.h"
 #include "test_meshes.h"
 
 namespace holefill {
@@ -162,8 +163,8 @@ TEST(Triangulate, MaxMinOnPlanarConvexPolygonMatchesDelaunayMinAngle) {
             if (d2 < r2 * (1.0 - 1e-12)) empty = false;
           }
           if (empty) {
-            delaunay_min_angle =
-                std::min(delaunay_min_angle, measure_triangle(p[i], p[j], p[k]).min_angle);
+            delaunay_min_angle = std::min(delaunay_min_angle,
+                                          geometry::measure_triangle(p[i], p[j], p[k]).min_angle);
           }
         }
       }
@@ -395,14 +396,15 @@ TEST(Triangulate, CollinearPointsGiveFiniteWeightsAndAreAvoided) {
     EXPECT_EQ(dp->quality.degenerate, 0) << to_string(weight);
     EXPECT_TRUE(std::isfinite(dp->quality.min_angle) && std::isfinite(dp->quality.max_dihedral));
   }
-  const TriangleMeasures flat = measure_triangle({0, 0, 0}, {1, 0, 0}, {2, 0, 0});
+  const geometry::TriangleMeasures flat =
+      geometry::measure_triangle({0, 0, 0}, {1, 0, 0}, {2, 0, 0});
   EXPECT_TRUE(flat.degenerate);
   EXPECT_EQ(flat.min_angle, 0.0);
 }
 
 TEST(Triangulate, MeasureTriangleGivesTheSmallestAngle) {
   // A 30-60-90 triangle.
-  const auto m = measure_triangle({0, 0, 0}, {std::sqrt(3.0), 0, 0}, {0, 1, 0});
+  const auto m = geometry::measure_triangle({0, 0, 0}, {std::sqrt(3.0), 0, 0}, {0, 1, 0});
   EXPECT_NEAR(m.min_angle, M_PI / 6.0, 1e-12);
   EXPECT_NEAR(m.area, std::sqrt(3.0) / 2.0, 1e-12);
   EXPECT_FALSE(m.degenerate);

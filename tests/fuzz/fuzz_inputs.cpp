@@ -38,7 +38,7 @@ std::string fill_and_check(const Mesh& before, const FillOptions& options, bool 
       progress = false;
       for (const int id : selection.hole_ids) {
         if (fills[id].stage() < options.last_stage &&
-            advance(after, holes[id], fills[id], options)) {
+            advance(after, holes[id], fills[id], options) == StageRun::Ran) {
           progress = true;
         }
       }

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "geometry.h"
 #include "holefill/components.h"
 #include "holefill/holes.h"
 #include "holefill/stitch.h"
@@ -52,7 +53,8 @@ std::string problems(const Filled& f) {
   for (int i = static_cast<int>(f.before.n_faces()); i < static_cast<int>(f.after.n_faces()); ++i) {
     std::vector<Point> p;
     for (const auto v : f.after.fv_range(FaceHandle(i))) p.push_back(f.after.point(v));
-    if (measure_triangle(p[0], p[1], p[2], false).degenerate) return "a degenerate patch face";
+    if (geometry::measure_triangle(p[0], p[1], p[2], false).degenerate)
+      return "a degenerate patch face";
   }
   return {};
 }

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <set>
 
+#include "geometry.h"
 #include "holefill/triangulate.h"
 
 namespace holefill::testing {
@@ -122,7 +123,7 @@ std::string check_fill_guarantees(const Mesh& before, const std::vector<Hole>& h
   for (const int f : patch_faces) {
     std::vector<Point> p;
     for (const auto v : after.fv_range(FaceHandle(f))) p.push_back(after.point(v));
-    if (measure_triangle(p[0], p[1], p[2], false).degenerate) {
+    if (geometry::measure_triangle(p[0], p[1], p[2], false).degenerate) {
       return "patch face " + std::to_string(f) + " is degenerate";
     }
   }

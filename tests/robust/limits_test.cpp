@@ -8,6 +8,7 @@
 
 #include "cad_parts.h"
 #include "fill_guarantees.h"
+#include "hole_triangulation.h"
 #include "holefill/fill.h"
 #include "holefill/holes.h"
 #include "test_meshes.h"

@@ -166,7 +166,8 @@ std::vector<HoleFill> step_randomly(Mesh& mesh, const Mesh& before, const std::v
   for (std::size_t step = 0; !open.empty(); ++step) {
     const int pick = integer(rng, 0, static_cast<int>(open.size()) - 1);
     const int id = open[pick];
-    if (!advance(mesh, holes[id], fills[id], options) || fills[id].stage() >= options.last_stage) {
+    if (advance(mesh, holes[id], fills[id], options) != StageRun::Ran ||
+        fills[id].stage() >= options.last_stage) {
       open.erase(open.begin() + pick);
     }
     if (step == check_at && problem.empty()) {

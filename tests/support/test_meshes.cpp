@@ -61,6 +61,15 @@ Mesh make_grid(int n, const std::function<double(double, double)>& height) {
   return mesh;
 }
 
+Mesh sphere_with_two_holes() {
+  return without_faces(make_icosphere(3), [](const Point& c) {
+    const double angle = std::atan2(c[1], c[0]);
+    const bool cap = c[2] > 0.55 + 0.12 * std::sin(5.0 * angle);
+    const bool small = (c - Point(0.0, 0.0, -1.0)).norm() < 0.25;
+    return cap || small;
+  });
+}
+
 Mesh without_faces(const Mesh& mesh, const std::function<bool(const Point&)>& remove) {
   return without_faces_where(mesh,
                              [&](const Point& centroid, const Point&) { return remove(centroid); });

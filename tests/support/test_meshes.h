@@ -20,6 +20,9 @@ Mesh make_grid(int n, const std::function<double(double, double)>& height);
 // (n/3)^2 holes of 4 edges.
 Mesh grid_with_square_holes(int n);
 
+// An icosphere (3 levels) with a wavy cap cut out around +z and a small hole at -z.
+Mesh sphere_with_two_holes();
+
 // A copy of `mesh` without the faces for which `remove(face centroid)` is true; vertices keep
 // their indices (unreferenced ones stay, isolated).
 Mesh without_faces(const Mesh& mesh, const std::function<bool(const Point&)>& remove);

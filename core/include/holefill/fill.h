@@ -75,9 +75,15 @@ struct HoleFill {
   bool failed() const { return !failure.empty(); }
 };
 
-// Runs the next stage on `fill` (which starts as HoleFill{} for `hole`). Returns false, with
-// fill.failure set, when the stage could not run; false without failure when all are done.
-bool advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options);
+// What advance() did.
+enum class StageRun {
+  Ran,      // the next stage ran; fill.stage() is now that stage
+  AllDone,  // every stage had run already: nothing changed
+  Failed,   // the stage could not run (now or before): fill.failure says why, mesh unchanged
+};
+
+// Runs the next stage on `fill` (which starts as HoleFill{} for `hole`).
+StageRun advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options);
 
 // Runs the stages up to options.last_stage on one hole.
 HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options);
@@ -91,8 +97,8 @@ HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
 // joined polygon (a failure says why, e.g. no valid bridge); the others refine and smooth the
 // patch. fill.boundary_edges counts every loop's edges, fill.joined_holes names loops 1, 2, ...
 // One loop: advance() itself.
-bool advance_joined(Mesh& mesh, const std::vector<const Hole*>& loops, HoleFill& fill,
-                    const FillOptions& options);
+StageRun advance_joined(Mesh& mesh, const std::vector<const Hole*>& loops, HoleFill& fill,
+                        const FillOptions& options);
 
 // Which holes fill_holes takes: the listed ids (all when empty), and only those with at most
 // max_boundary_edges boundary edges (no limit when 0). A hole comes with its islands and the

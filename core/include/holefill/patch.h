@@ -32,9 +32,4 @@ struct PatchTags {
 
 // Reads the face stage tag without adding properties; Original where the mesh has no tags.
 Stage face_stage(const Mesh& mesh, FaceHandle face);
-
-// Refinement's relaxation test: true when the edge's two opposite angles sum to more than pi
-// (the edge is not locally Delaunay) and the swapped edge's opposite angles sum to less.
-bool should_swap_edge(const Mesh& mesh, EdgeHandle edge);
-
 }  // namespace holefill

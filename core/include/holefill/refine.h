@@ -51,4 +51,8 @@ RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options
 // Swaps interior patch edges until none should be swapped; returns the number of swaps.
 std::size_t relax_patch_edges(Mesh& mesh, const Patch& patch);
 
+// Refinement's relaxation test: true when the edge's two opposite angles sum to more than pi
+// (the edge is not locally Delaunay) and the swapped edge's opposite angles sum to less.
+bool should_swap_edge(const Mesh& mesh, EdgeHandle edge);
+
 }  // namespace holefill

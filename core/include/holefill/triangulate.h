@@ -11,9 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "holefill/holes.h"
 #include "holefill/mesh.h"
-#include "holefill/patch.h"
 #include "holefill/progress.h"
 #include "holefill/weights.h"
 
@@ -84,6 +82,12 @@ struct PolygonTriangulation {
   TriangulationQuality quality;  // as the dynamic program accumulated it
 };
 
+// A polygon's triangulation, or why there is none.
+struct PlannedTriangulation {
+  std::optional<PolygonTriangulation> triangulation;
+  std::string failure;  // set when triangulation is empty
+};
+
 // The optimal triangulation under options.weight, or nothing when the forbidden chords leave no
 // valid triangulation. The polygon needs at least 3 and fewer than kMaxPolygonSize points.
 // Polygons above options.restricted.above_edges go through the restricted search first (see
@@ -103,14 +107,6 @@ std::vector<std::pair<int, int>> restricted_chords(const HolePolygon& polygon,
 std::optional<PolygonTriangulation> triangulate_polygon_restricted(
     const HolePolygon& polygon, const TriangulateOptions& options);
 
-// The measures of triangle (a, b, c) that the weights use, except its dihedral angle (and its
-// smallest angle, left 0, when with_min_angle is false: only maxmin needs the atan2).
-TriangleMeasures measure_triangle(const Point& a, const Point& b, const Point& c,
-                                  bool with_min_angle = true);
-
-// Angle between two unit normals, radians; pi when either is zero (unknown orientation).
-double angle_between_normals(const Point& n1, const Point& n2);
-
 // The value options.weight gives a triangulation of this quality (what the dynamic program
 // minimises, up to its dihedral terms being taken against the neighbouring sub-polygons'
 // triangles).
@@ -119,32 +115,5 @@ WeightValue weight_value(const TriangulationQuality& quality, const TriangulateO
 // Recomputes the quality of a given triangulation of `polygon` from scratch, edge by edge.
 TriangulationQuality evaluate_triangulation(const HolePolygon& polygon,
                                             const std::vector<std::array<int, 3>>& triangles);
-
-// The hole's polygon as the dynamic program sees it: points, the normals of the faces across its
-// edges, and the chords that already exist in the mesh.
-HolePolygon hole_polygon(const Mesh& mesh, const Hole& hole);
-
-struct TriangulateHoleResult {
-  std::optional<Patch> patch;  // set when the hole was triangulated
-  std::string failure;         // why not, otherwise
-};
-
-// The hole's triangulation, or why there is none. Reads the mesh only, so plans for several
-// holes can be made at once on several threads.
-struct PlannedTriangulation {
-  std::optional<PolygonTriangulation> triangulation;
-  std::string failure;
-};
-PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
-                                        const TriangulateOptions& options);
-
-// Adds a planned triangulation's triangles to the mesh (tagged Stage::Triangulated). On failure
-// the mesh is left exactly as it was.
-TriangulateHoleResult apply_triangulation(Mesh& mesh, const Hole& hole,
-                                          const PlannedTriangulation& plan);
-
-// plan_triangulation, then apply_triangulation.
-TriangulateHoleResult triangulate_hole(Mesh& mesh, const Hole& hole,
-                                       const TriangulateOptions& options);
 
 }  // namespace holefill

@@ -1,0 +1,35 @@
+// Triangulating one hole of a mesh, in two steps so that fill_holes can plan many holes at once
+// on several threads and add their patches one by one (internal: the pipeline of fill.h is the
+// public way to fill a hole).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "holefill/holes.h"
+#include "holefill/mesh.h"
+#include "holefill/patch.h"
+#include "holefill/triangulate.h"
+
+namespace holefill {
+
+// The hole's polygon as the dynamic program sees it: points, the normals of the faces across its
+// edges, and the chords that already exist in the mesh.
+HolePolygon hole_polygon(const Mesh& mesh, const Hole& hole);
+
+struct TriangulateHoleResult {
+  std::optional<Patch> patch;  // set when the hole was triangulated
+  std::string failure;         // why not, otherwise
+};
+
+// The hole's triangulation, or why there is none. Reads the mesh only, so plans for several
+// holes can be made at once on several threads.
+PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
+                                        const TriangulateOptions& options);
+
+// Adds a planned triangulation's triangles to the mesh (tagged Stage::Triangulated). On failure
+// the mesh is left exactly as it was.
+TriangulateHoleResult apply_triangulation(Mesh& mesh, const Hole& hole,
+                                          const PlannedTriangulation& plan);
+
+}  // namespace holefill

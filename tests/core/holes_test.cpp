@@ -1,0 +1,126 @@
+// Finding holes, checked against the mesh's boundary halfedges walked by hand: every boundary
+// halfedge lies on exactly one loop, loops are closed chains in order, largest first, and their
+// measures are the sums they claim to be.
+#include "holefill/holes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+
+#include "test_meshes.h"
+
+namespace holefill {
+namespace {
+
+using testing::make_icosphere;
+using testing::without_faces;
+
+// An icosphere with faces removed at random places (some neighbouring, so loops merge).
+Mesh sphere_with_random_holes(unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Point> centres;
+  for (int i = 0; i < 6; ++i)
+    centres.push_back(Point(unit(rng), unit(rng), unit(rng)).normalized());
+  return without_faces(make_icosphere(3), [&](const Point& c) {
+    return std::any_of(centres.begin(), centres.end(),
+                       [&](const Point& centre) { return (c - centre).norm() < 0.2; });
+  });
+}
+
+TEST(Holes, EveryBoundaryHalfedgeLiesOnExactlyOneClosedLoopLargestFirst) {
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    const Mesh mesh = sphere_with_random_holes(seed);
+    const auto holes = find_holes(mesh);
+    std::set<int> boundary;
+    for (const auto h : mesh.halfedges()) {
+      if (mesh.is_boundary(h)) boundary.insert(h.idx());
+    }
+    ASSERT_FALSE(boundary.empty()) << "seed " << seed;
+    std::multiset<int> on_loops;
+    for (std::size_t id = 0; id < holes.size(); ++id) {
+      const Hole& hole = holes[id];
+      EXPECT_EQ(hole.id, static_cast<int>(id));
+      ASSERT_EQ(hole.vertices.size(), hole.size());
+      if (id > 0) {
+        EXPECT_GE(holes[id - 1].size(), hole.size());
+      }
+      double perimeter = 0.0;
+      Point sum(0, 0, 0);
+      for (std::size_t i = 0; i < hole.size(); ++i) {
+        const HalfedgeHandle h = hole.halfedges[i];
+        on_loops.insert(h.idx());
+        EXPECT_TRUE(mesh.is_boundary(h));
+        EXPECT_EQ(mesh.from_vertex_handle(h), hole.vertices[i]);
+        EXPECT_EQ(mesh.to_vertex_handle(h), hole.vertices[(i + 1) % hole.size()]);
+        perimeter += (mesh.point(mesh.to_vertex_handle(h)) - mesh.point(hole.vertices[i])).norm();
+        sum += mesh.point(hole.vertices[i]);
+      }
+      EXPECT_NEAR(hole.perimeter, perimeter, 1e-12 * perimeter);
+      EXPECT_LT((hole.centroid - sum / static_cast<double>(hole.size())).norm(), 1e-12);
+    }
+    EXPECT_EQ(on_loops, std::multiset<int>(boundary.begin(), boundary.end())) << "seed " << seed;
+  }
+}
+
+TEST(Holes, SurroundingEdgeLengthIsTheMeanOverEachBoundaryVertexsEdges) {
+  const Mesh mesh = sphere_with_random_holes(3);
+  for (const Hole& hole : find_holes(mesh)) {
+    double total = 0.0;
+    int count = 0;
+    for (const VertexHandle v :
+         std::set<VertexHandle>(hole.vertices.begin(), hole.vertices.end())) {
+      for (const auto h : mesh.voh_range(v)) {
+        total += (mesh.point(mesh.to_vertex_handle(h)) - mesh.point(v)).norm();
+        ++count;
+      }
+    }
+    EXPECT_NEAR(hole.mean_surrounding_edge_length, total / count, 1e-12);
+  }
+}
+
+TEST(Holes, TheLoopThroughAHalfedgeIsFindHolesLoopStartingThere) {
+  const Mesh mesh = sphere_with_random_holes(5);
+  for (const Hole& hole : find_holes(mesh)) {
+    for (std::size_t start = 0; start < hole.size(); start += 3) {
+      const Hole through = hole_through(mesh, hole.halfedges[start]);
+      EXPECT_EQ(through.id, -1);
+      ASSERT_EQ(through.size(), hole.size());
+      for (std::size_t i = 0; i < hole.size(); ++i) {
+        EXPECT_EQ(through.halfedges[i], hole.halfedges[(start + i) % hole.size()]);
+      }
+      EXPECT_NEAR(through.perimeter, hole.perimeter, 1e-12);
+    }
+  }
+}
+
+TEST(Holes, TwoSquareHolesMeetingAtACornerArePinchedAndSeparateHolesAreNot) {
+  // A 6 x 6 flat grid without cells (1, 1) and (2, 2), which share a corner vertex, and
+  // without cell (4, 1), alone.
+  const int n = 6;
+  const auto cell = [n](const Point& c) {
+    return std::pair(static_cast<int>(c[0] * n), static_cast<int>(c[1] * n));
+  };
+  const Mesh mesh = without_faces(
+      testing::make_grid(n + 1, [](double, double) { return 0.0; }), [&](const Point& c) {
+        const auto xy = cell(c);
+        return xy == std::pair(1, 1) || xy == std::pair(2, 2) || xy == std::pair(4, 1);
+      });
+  std::map<bool, int> by_pinch;
+  for (const Hole& hole : find_holes(mesh)) {
+    if (hole.size() == 4 * n) continue;  // the grid's outer border
+    EXPECT_EQ(hole.repeated_vertices, hole.size() == 8 ? 1u : 0u) << hole.size();
+    ++by_pinch[hole.pinched];
+  }
+  // Cells (1, 1) and (2, 2) form one loop of 8 edges through their shared corner twice (the
+  // corner's fans are joined by no face), or two loops of 4 that touch: pinched either way.
+  EXPECT_GE(by_pinch[true], 1);
+  EXPECT_EQ(by_pinch[false], 1);  // cell (4, 1)
+}
+
+}  // namespace
+}  // namespace holefill

@@ -1,0 +1,114 @@
+// Patch and mesh statistics against the same quantities computed another way: angles by the law
+// of cosines, areas by Heron's formula, valences by counting neighbours, components by hand.
+#include "holefill/stats.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "holefill/fill.h"
+#include "holefill/holes.h"
+#include "test_meshes.h"
+
+namespace holefill {
+namespace {
+
+using testing::make_icosphere;
+using testing::sphere_with_two_holes;
+
+double angle_by_cosines(double opposite, double side1, double side2) {
+  return std::acos(std::clamp(
+      (side1 * side1 + side2 * side2 - opposite * opposite) / (2.0 * side1 * side2), -1.0, 1.0));
+}
+
+TEST(Stats, PatchStatsAgreeWithTheLawOfCosinesHeronAndCountedNeighbours) {
+  Mesh mesh = sphere_with_two_holes();
+  const auto holes = find_holes(mesh);
+  const HoleFill fill = fill_hole(mesh, holes[0], FillOptions{});
+  ASSERT_FALSE(fill.failed());
+  const PatchStats stats = patch_stats(mesh, fill.patch);
+  EXPECT_EQ(stats.new_vertices, fill.patch.new_vertices.size());
+  EXPECT_EQ(stats.new_faces, fill.patch.faces.size());
+
+  std::map<int, std::size_t> valences;
+  for (const auto v : fill.patch.new_vertices) {
+    int neighbours = 0;
+    for (const auto w : mesh.vv_range(v)) neighbours += w.is_valid() ? 1 : 0;
+    ++valences[neighbours];
+  }
+  EXPECT_EQ(stats.valence_histogram, valences);
+
+  double smallest = M_PI, sum_of_smallest = 0.0, area = 0.0, largest_dihedral = 0.0;
+  std::set<EdgeHandle> edges;
+  for (const auto f : fill.patch.faces) {
+    std::vector<Point> p;
+    for (const auto v : mesh.fv_range(f)) p.push_back(mesh.point(v));
+    const double a = (p[1] - p[2]).norm(), b = (p[2] - p[0]).norm(), c = (p[0] - p[1]).norm();
+    const double s = 0.5 * (a + b + c);
+    area += std::sqrt(s * (s - a) * (s - b) * (s - c));
+    const double least =
+        std::min({angle_by_cosines(a, b, c), angle_by_cosines(b, c, a), angle_by_cosines(c, a, b)});
+    smallest = std::min(smallest, least);
+    sum_of_smallest += least;
+    for (const auto e : mesh.fe_range(f)) edges.insert(e);
+  }
+  for (const EdgeHandle e : edges) {
+    const auto f0 = mesh.face_handle(mesh.halfedge_handle(e, 0));
+    const auto f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
+    ASSERT_TRUE(f0.is_valid() && f1.is_valid());  // the patch closed the hole
+    const Point n0 = mesh.calc_face_normal(f0), n1 = mesh.calc_face_normal(f1);
+    largest_dihedral = std::max(largest_dihedral, std::acos(std::clamp(n0 | n1, -1.0, 1.0)));
+  }
+  const double degrees = 180.0 / M_PI;
+  EXPECT_NEAR(stats.min_angle_deg, smallest * degrees, 1e-6);
+  EXPECT_NEAR(stats.mean_min_angle_deg, sum_of_smallest / fill.patch.faces.size() * degrees, 1e-6);
+  EXPECT_NEAR(stats.max_dihedral_deg, largest_dihedral * degrees, 1e-6);
+  EXPECT_NEAR(stats.area, area, 1e-9 * area);
+  EXPECT_GT(stats.min_angle_deg, 0.0);
+}
+
+TEST(Stats, AnIcospheresValencesAreTwelveFivesAndTheRestSixes) {
+  for (const int levels : {1, 2, 3}) {
+    const Mesh sphere = make_icosphere(levels);
+    const std::size_t vertices = 10 * (std::size_t{1} << (2 * levels)) + 2;
+    ASSERT_EQ(sphere.n_vertices(), vertices);
+    const std::map<int, std::size_t> expected{{5, 12}, {6, vertices - 12}};
+    EXPECT_EQ(valence_histogram(sphere), expected) << levels;
+  }
+}
+
+TEST(Stats, ComponentsAreNumberedInTheOrderOfTheirFirstVertex) {
+  // A lone vertex, a sphere, a triangle, another sphere: four components, labelled in that order.
+  Mesh mesh;
+  mesh.add_vertex(Point(9, 9, 9));
+  const auto append = [&mesh](const Mesh& part, const Point& offset) {
+    std::vector<VertexHandle> added;
+    for (const auto v : part.vertices()) added.push_back(mesh.add_vertex(part.point(v) + offset));
+    for (const auto f : part.faces()) {
+      std::vector<VertexHandle> corners;
+      for (const auto v : part.fv_range(f)) corners.push_back(added[v.idx()]);
+      mesh.add_face(corners);
+    }
+  };
+  const Mesh sphere = make_icosphere(1);
+  Mesh triangle;
+  triangle.add_face(triangle.add_vertex(Point(0, 0, 0)), triangle.add_vertex(Point(1, 0, 0)),
+                    triangle.add_vertex(Point(0, 1, 0)));
+  append(sphere, Point(0, 0, 0));
+  append(triangle, Point(5, 0, 0));
+  append(sphere, Point(0, 5, 0));
+  EXPECT_EQ(connected_components(mesh), 4u);
+  const std::vector<int> labels = component_labels(mesh);
+  ASSERT_EQ(labels.size(), mesh.n_vertices());
+  const std::size_t s = sphere.n_vertices();
+  EXPECT_EQ(labels[0], 0);
+  for (std::size_t i = 1; i <= s; ++i) EXPECT_EQ(labels[i], 1) << i;
+  for (std::size_t i = s + 1; i <= s + 3; ++i) EXPECT_EQ(labels[i], 2) << i;
+  for (std::size_t i = s + 4; i < labels.size(); ++i) EXPECT_EQ(labels[i], 3) << i;
+  EXPECT_EQ(connected_components(Mesh{}), 0u);
+}
+
+}  // namespace
+}  // namespace holefill
