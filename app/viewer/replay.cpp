@@ -87,12 +87,13 @@ Checkpoints continue_checkpoints(const Checkpoints& saved, const std::vector<Fil
 }
 
 bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& step,
-              Checkpoints* checkpoints, Progress* progress) {
+              Checkpoints* checkpoints, Progress* progress,
+              const std::shared_ptr<const MeshState>& unchanged) {
   const bool followed = checkpoints && checkpoints->hole_id == step.hole_id;
   // The state before this step, unless it is kept already (states[k] precedes steps[k]).
   if (followed && checkpoints->states.size() == checkpoints->steps.size() &&
       checkpoints->states.size() < kKeptStates) {
-    checkpoints->states.push_back(std::make_shared<const MeshState>(state));
+    checkpoints->states.push_back(unchanged ? unchanged : std::make_shared<const MeshState>(state));
   }
   FillOptions options = step.options;
   options.triangulate.progress = progress;
@@ -104,9 +105,9 @@ bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& 
   return ran;
 }
 
-std::optional<Rebuilt> rebuild(const Mesh& loaded, const std::vector<Hole>& holes,
-                               const std::vector<FillStep>& log, int hole_id,
-                               const Checkpoints& saved, Progress* progress) {
+std::optional<Rebuilt> rebuild(const std::shared_ptr<const MeshState>& loaded,
+                               const std::vector<Hole>& holes, const std::vector<FillStep>& log,
+                               int hole_id, const Checkpoints& saved, Progress* progress) {
   Rebuilt result;
   std::vector<FillStep> to_run;
   const bool last = hole_id >= 0 && steps_come_last(log, hole_id);
@@ -127,13 +128,16 @@ std::optional<Rebuilt> rebuild(const Mesh& loaded, const std::vector<Hole>& hole
                           {saved.states.begin(), saved.states.begin() + reused + 1}};
     to_run.assign(steps.begin() + reused, steps.end());
   } else {
-    result.state = {loaded, std::vector<HoleFill>(holes.size())};
+    result.state = *loaded;
     if (last) result.checkpoints = {hole_id, std::move(others), {}, {}};
     to_run = log;
   }
   for (std::size_t i = 0; i < to_run.size(); ++i) {
     if (progress && progress->cancelled()) return std::nullopt;
-    run_step(result.state, holes, to_run[i], &result.checkpoints, progress);
+    // A replay from the loaded mesh keeps that mesh, shared, as the state before its first step.
+    const bool from_loaded = i == 0 && result.checkpoints.states.empty();
+    run_step(result.state, holes, to_run[i], &result.checkpoints, progress,
+             from_loaded ? loaded : nullptr);
     if (progress) progress->set_fraction(static_cast<double>(i + 1) / to_run.size());
   }
   if (progress && progress->cancelled()) return std::nullopt;

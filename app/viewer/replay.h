@@ -64,22 +64,25 @@ Checkpoints continue_checkpoints(const Checkpoints& saved, const std::vector<Fil
 
 // Runs one step on `state`; `progress` reaches the triangulation's dynamic program (a cancel
 // stops it: the step then fails, and the caller drops the state). When `checkpoints` follow
-// step.hole_id, the state before the step is kept first and the step recorded. Returns whether
-// the stage ran.
+// step.hole_id, the state before the step is kept first and the step recorded: `unchanged`
+// where the caller has it (a kept state equal to `state`, shared instead of copied: a mesh of a
+// million faces is about 100 MB), else a copy. Returns whether the stage ran.
 bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& step,
-              Checkpoints* checkpoints, Progress* progress);
+              Checkpoints* checkpoints, Progress* progress,
+              const std::shared_ptr<const MeshState>& unchanged = nullptr);
 
 struct Rebuilt {
   MeshState state;
   Checkpoints checkpoints;  // for hole_id, when its steps are the log's last
 };
 
-// The state `log` makes from `loaded`: from saved's states where they apply (the log's steps of
-// saved.hole_id come last, its other steps are saved.others, and the first steps have the same
-// options for their stage), else every step from the loaded mesh. Reports the share of the steps
-// run and returns nothing once `progress` is cancelled.
-std::optional<Rebuilt> rebuild(const Mesh& loaded, const std::vector<Hole>& holes,
-                               const std::vector<FillStep>& log, int hole_id,
-                               const Checkpoints& saved, Progress* progress);
+// The state `log` makes from `loaded` (the mesh as loaded, no fills; kept as the first
+// checkpoint when the log's first step is the hole's): from saved's states where they apply (the
+// log's steps of saved.hole_id come last, its other steps are saved.others, and the first steps
+// have the same options for their stage), else every step from the loaded mesh. Reports the share
+// of the steps run and returns nothing once `progress` is cancelled.
+std::optional<Rebuilt> rebuild(const std::shared_ptr<const MeshState>& loaded,
+                               const std::vector<Hole>& holes, const std::vector<FillStep>& log,
+                               int hole_id, const Checkpoints& saved, Progress* progress);
 
 }  // namespace holefill::viewer

@@ -69,7 +69,7 @@ bool Session::toggle(int hole_id) {
 }
 
 int Session::closed_by(int hole_id) const {
-  for (const auto& fill : fills_) {
+  for (const auto& fill : state_->fills) {
     if (fill.stage() != Stage::Original && contains(fill.joined_holes, hole_id))
       return fill.hole_id;
   }
@@ -104,7 +104,7 @@ void Session::selection_changed() {
   const IslandMap none{std::vector<std::vector<int>>(n), std::vector<int>(n, -1),
                        std::vector<std::string>(n)};
   for (const auto& group :
-       group_loops(mesh_, holes_, none, {{selected_, joined_.front()}}, options_.join)) {
+       group_loops(mesh(), holes_, none, {{selected_, joined_.front()}}, options_.join)) {
     if (contains(group.holes, selected_)) bridge_problem_ = group.problem;
   }
 }

@@ -41,11 +41,13 @@ bool Session::open(const std::filesystem::path& path) {
 
 void Session::load(Mesh mesh, std::string name) {
   name_ = std::move(name);
-  loaded_ = std::move(mesh);
-  holes_ = find_holes(loaded_);
-  islands_ = find_islands(loaded_, holes_, options_.islands);
+  holes_ = find_holes(mesh);
+  loaded_ = std::make_shared<const MeshState>(
+      MeshState{std::move(mesh), std::vector<HoleFill>(holes_.size())});
+  const Mesh& loaded = loaded_->mesh;
+  islands_ = find_islands(loaded, holes_, options_.islands);
   borders_.clear();
-  const auto loops = classify_loops(loaded_, holes_, mesh_pieces(loaded_));
+  const auto loops = classify_loops(loaded, holes_, mesh_pieces(loaded));
   for (const auto& hole : holes_) {
     // An island's loop bounds a piece of its own, but it is filled with its hole.
     borders_.push_back(loops[hole.id].kind == LoopKind::Border && islands_.outer[hole.id] < 0);
@@ -55,15 +57,15 @@ void Session::load(Mesh mesh, std::string name) {
   redo_.clear();
   selected_ = -1;
   revision_ = saved_revision_ = last_revision_ = 0;
-  take({loaded_, std::vector<HoleFill>(holes_.size())}, {});
+  take(loaded_, {});
 }
 
 bool Session::save(const std::filesystem::path& path) {
   try {
-    save_mesh(mesh_, path);
+    save_mesh(mesh(), path);
     saved_revision_ = revision_;
     std::string lost;
-    for (const auto& kind : attributes_not_written(mesh_, path)) lost += "; not written: " + kind;
+    for (const auto& kind : attributes_not_written(mesh(), path)) lost += "; not written: " + kind;
     notice_ = {"Saved " + path.string() + lost, false};
     return true;
   } catch (const std::exception& error) {
@@ -80,7 +82,7 @@ void Session::set_options(const FillOptions& options) {
 
 std::optional<Stage> Session::next_stage() const {
   if (selected_ < 0) return std::nullopt;
-  const HoleFill& fill = fills_[selected_];
+  const HoleFill& fill = state_->fills[selected_];
   if (fill.failed() || fill.stage() == Stage::Smoothed) return std::nullopt;
   return static_cast<Stage>(static_cast<int>(fill.stage()) + 1);
 }
@@ -146,7 +148,7 @@ Notice summary(const FillRequest& request, const std::vector<HoleFill>& fills) {
 std::optional<FillRequest> Session::fill_all_request(std::size_t max_edges) const {
   FillRequest request{{}, false, true, options_, {}};
   for (const auto& hole : holes_) {
-    if (!unfinished(fills_[hole.id]) || closed_by(hole.id) >= 0) continue;
+    if (!unfinished(state_->fills[hole.id]) || closed_by(hole.id) >= 0) continue;
     const bool stepped = has_steps(hole.id);
     // The border of an open surface is no hole to close, unless the user fills it on its own.
     if (!stepped && borders_[hole.id]) {
@@ -174,7 +176,7 @@ std::optional<FillRequest> Session::fill_all_request(std::size_t max_edges) cons
 
 std::optional<FillResult> Session::compute(const FillRequest& request, Progress* progress) const {
   FillResult result;
-  result.state = {mesh_, fills_};
+  result.state = *state_;
   result.log = log_;
   // One hole's steps keep the states before them, for option changes and undo (replay.h).
   if (request.hole_ids.size() == 1)
@@ -190,7 +192,9 @@ std::optional<FillResult> Session::compute(const FillRequest& request, Progress*
       const FillStep step =
           make_step(id, joined == request.joined.end() ? std::vector<int>{} : joined->second,
                     request.options);
-      const bool ran = run_step(result.state, holes_, step, &result.checkpoints, progress);
+      // Until a step runs, the state is the session's own, which the checkpoints may share.
+      const bool ran = run_step(result.state, holes_, step, &result.checkpoints, progress,
+                                result.log.size() == log_.size() ? state_ : nullptr);
       if (progress && progress->cancelled()) return std::nullopt;
       // A failed stage is logged too, so that replay shows the same failure in the hole list.
       if (ran || fill.failed()) result.log.push_back(step);
@@ -214,7 +218,7 @@ void Session::apply(FillResult result) {
   log_ = std::move(result.log);
   if (result.mesh_changed) revised();
   if (!result.notice.text.empty()) notice_ = std::move(result.notice);
-  take(std::move(result.state), std::move(result.checkpoints));
+  take(std::make_shared<const MeshState>(std::move(result.state)), std::move(result.checkpoints));
 }
 
 bool Session::reset_selected() { return run(reset_request()); }
@@ -297,7 +301,8 @@ void Session::apply(ChangeResult result) {
   log_ = std::move(change.log);
   selected_ = change.selected;
   options_ = change.options;
-  take(std::move(result.rebuilt.state), std::move(result.rebuilt.checkpoints));
+  take(std::make_shared<const MeshState>(std::move(result.rebuilt.state)),
+       std::move(result.rebuilt.checkpoints));
   // Undo and redo bring back the loops shift-click had selected with an unfilled hole (a filled
   // one's are those its steps closed).
   if (change.joined && selected_ >= 0 && !has_steps(selected_)) {
@@ -308,7 +313,7 @@ void Session::apply(ChangeResult result) {
 
 const std::map<int, std::size_t>& Session::mesh_valences() {
   if (valences_version_ != mesh_version_) {
-    valences_ = valence_histogram(mesh_);
+    valences_ = valence_histogram(mesh());
     valences_version_ = mesh_version_;
   }
   return valences_;
@@ -374,9 +379,8 @@ void Session::remember() {
   last_change_was_options_ = false;
 }
 
-void Session::take(MeshState state, Checkpoints checkpoints) {
-  mesh_ = std::move(state.mesh);
-  fills_ = std::move(state.fills);
+void Session::take(std::shared_ptr<const MeshState> state, Checkpoints checkpoints) {
+  state_ = std::move(state);
   checkpoints_ = std::move(checkpoints);
   changed();
   joined_ = default_joined(selected_);

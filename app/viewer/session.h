@@ -103,11 +103,11 @@ class Session {
   bool modified() const { return revision_ != saved_revision_; }
 
   const std::string& name() const { return name_; }
-  const Mesh& mesh() const { return mesh_; }
+  const Mesh& mesh() const { return state_->mesh; }
   const std::vector<Hole>& holes() const { return holes_; }
   // Whether loop `hole_id` looks like the border of an open surface (borders.h).
   bool is_border(int hole_id) const { return borders_.at(hole_id); }
-  const HoleFill& fill(int hole_id) const { return fills_.at(hole_id); }
+  const HoleFill& fill(int hole_id) const { return state_->fills.at(hole_id); }
   // A new number whenever mesh() changes (unique across sessions), so a renderer knows when to
   // upload it again.
   std::uint64_t mesh_version() const { return mesh_version_; }
@@ -234,7 +234,7 @@ class Session {
   void remember();
   // Undo or redo to the state `to`.
   LogChange return_to(LogChange::Kind kind, const Snapshot& to) const;
-  void take(MeshState state, Checkpoints checkpoints);
+  void take(std::shared_ptr<const MeshState> state, Checkpoints checkpoints);
   bool run(const std::optional<FillRequest>& request);
   bool run(const std::optional<LogChange>& change);
   bool has_steps(int hole_id) const;
@@ -244,11 +244,12 @@ class Session {
   void revised();
 
   std::string name_;
-  Mesh loaded_;
-  Mesh mesh_;
+  // The mesh as loaded, and the one the log makes of it with every hole's fill: shared, not
+  // copied, with the checkpoints that keep them (a million-face mesh is about 100 MB).
+  std::shared_ptr<const MeshState> loaded_ = std::make_shared<const MeshState>();
+  std::shared_ptr<const MeshState> state_ = loaded_;
   std::vector<Hole> holes_;
   std::vector<bool> borders_;  // per hole, from classify_loops
-  std::vector<HoleFill> fills_;
   std::vector<FillStep> log_;
   Checkpoints checkpoints_;
   std::vector<Snapshot> undo_;

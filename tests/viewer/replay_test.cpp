@@ -150,5 +150,32 @@ TEST(Replay, OnlyTheStageAnOptionAffectsCounts) {
   EXPECT_TRUE(same_for_stage(Stage::Refined, a, b));
 }
 
+// A replay from the loaded mesh keeps that mesh as the state before the hole's first step,
+// shared rather than copied (a million-face mesh is about 100 MB); the later states are its own.
+TEST(Replay, TheLoadedMeshIsKeptSharedNotCopied) {
+  const Session session = bunny_session();
+  const auto loaded = std::make_shared<const MeshState>(
+      MeshState{session.mesh(), std::vector<HoleFill>(session.holes().size())});
+  std::vector<FillStep> log;
+  for (int stage = 0; stage < 3; ++stage) log.push_back(make_step(0, {}, {}));
+  const auto rebuilt = rebuild(loaded, session.holes(), log, 0, {}, nullptr);
+  ASSERT_TRUE(rebuilt);
+  ASSERT_EQ(rebuilt->checkpoints.states.size(), 3u);
+  EXPECT_EQ(rebuilt->checkpoints.states[0], loaded);
+  EXPECT_NE(rebuilt->checkpoints.states[1], loaded);
+  EXPECT_TRUE(same_mesh(loaded->mesh, session.mesh()));  // untouched
+  Session direct = bunny_session();
+  direct.select(0);
+  ASSERT_TRUE(direct.fill_selected());
+  EXPECT_TRUE(same_mesh(rebuilt->state.mesh, direct.mesh()));
+  // After another hole's step, the state before hole 0's steps is that step's result.
+  log.insert(log.begin(), make_step(1, {}, {}));
+  const auto after_other = rebuild(loaded, session.holes(), log, 0, {}, nullptr);
+  ASSERT_TRUE(after_other);
+  ASSERT_FALSE(after_other->checkpoints.states.empty());
+  EXPECT_NE(after_other->checkpoints.states[0], loaded);
+  EXPECT_GT(after_other->checkpoints.states[0]->mesh.n_faces(), loaded->mesh.n_faces());
+}
+
 }  // namespace
 }  // namespace holefill::viewer
