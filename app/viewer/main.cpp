@@ -170,7 +170,7 @@ void carry_out(const hv::Request& request, hv::FileActions& files, hv::Session& 
     case hv::Command::ZoomReset:
       ui.zoom = hv::zoom_after(ui.zoom, *request.command);
       session.tell({"Text size " + std::to_string(std::lround(100.0f * hv::zoom_factor(ui.zoom))) +
-                        " % (Ctrl +, Ctrl -, Ctrl 0)",
+                        " % (Ctrl+Plus, Ctrl+Minus, Ctrl+0)",
                     false});
       break;
     default:

@@ -24,10 +24,10 @@ constexpr Shortcut kShortcuts[] = {
     {Command::Bridge, 'B', false, false, "B", "bridge the two selected loops (shift-click)"},
     {Command::Help, kKeyF1, false, false, "F1", "this help"},
     {Command::Screenshot, kKeyF12, false, false, "F12", "save a screenshot"},
-    {Command::ZoomIn, '+', true, false, "Ctrl + or Ctrl =", "larger text and panel"},
+    {Command::ZoomIn, '+', true, false, "Ctrl+Plus, Ctrl+=", "larger text and panel"},
     {Command::ZoomIn, '+', true, true, nullptr, "the same where + takes Shift"},
-    {Command::ZoomOut, '-', true, false, "Ctrl -", "smaller text and panel"},
-    {Command::ZoomReset, '0', true, false, "Ctrl 0", "text at the screen's own size"},
+    {Command::ZoomOut, '-', true, false, "Ctrl+Minus", "smaller text and panel"},
+    {Command::ZoomReset, '0', true, false, "Ctrl+0", "text at the screen's own size"},
 };
 
 }  // namespace
