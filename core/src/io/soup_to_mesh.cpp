@@ -80,28 +80,45 @@ void triangulate_face(const Soup& soup, std::size_t f, std::vector<int>& ks,
   if (dropped) ++report.degenerate_faces_dropped;
 }
 
+// Which of the items 0..count-1 have the key of an earlier one, in one pass over a flat
+// open-addressing table of indices (a node per item in a std::unordered_set, or a sort of all the
+// keys, took most of the time of these checks on big meshes).
+template <class KeyOf, class Hash>
+std::vector<char> repeats(std::size_t count, KeyOf key_of, Hash hash) {
+  const std::size_t mask = std::bit_ceil(2 * count + 1) - 1;
+  std::vector<std::uint32_t> table(mask + 1, 0);  // 1 + the index of the item there, 0: empty
+  std::vector<char> repeat(count, 0);
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto key = key_of(i);
+    std::size_t slot = hash(key) & mask;
+    while (table[slot] != 0 && !(key_of(table[slot] - 1) == key)) slot = (slot + 1) & mask;
+    if (table[slot] != 0) {
+      repeat[i] = 1;
+    } else {
+      table[slot] = static_cast<std::uint32_t>(i + 1);
+    }
+  }
+  return repeat;
+}
+
 // Removes triangles with the same corners in the same cyclic order as an earlier one, and their
 // entries in `sources` (the face each triangle came from) and `corners` (when not empty).
 std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles, std::vector<int>& sources,
                                      std::vector<Triangle>& corners) {
-  auto canonical = [](Triangle t) {
+  auto canonical = [&triangles](std::size_t i) {
+    Triangle t = triangles[i];
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     return t;
   };
-  std::vector<std::pair<Triangle, std::size_t>> sorted;
-  sorted.reserve(triangles.size());
-  for (std::size_t i = 0; i < triangles.size(); ++i) {
-    sorted.emplace_back(canonical(triangles[i]), i);
-  }
-  std::sort(sorted.begin(), sorted.end());
-  std::vector<char> duplicate(triangles.size(), 0);
-  std::size_t count = 0;
-  for (std::size_t i = 1; i < sorted.size(); ++i) {
-    if (sorted[i].first == sorted[i - 1].first) {
-      duplicate[sorted[i].second] = 1;
-      ++count;
-    }
-  }
+  auto hash = [](const Triangle& t) {
+    std::uint64_t h = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(t[0])) << 32 |
+                       static_cast<std::uint32_t>(t[1])) *
+                      0x9E3779B97F4A7C15ull;
+    h = (h ^ static_cast<std::uint32_t>(t[2])) * 0xC2B2AE3D27D4EB4Full;
+    return static_cast<std::size_t>(h ^ (h >> 31));
+  };
+  const std::vector<char> duplicate = repeats(triangles.size(), canonical, hash);
+  const auto count = static_cast<std::size_t>(std::count(duplicate.begin(), duplicate.end(), 1));
   if (count == 0) return 0;
   std::size_t kept = 0;
   for (std::size_t i = 0; i < triangles.size(); ++i) {
@@ -312,25 +329,24 @@ std::size_t split_closed_fans(std::vector<Triangle>& triangles, const std::vecto
   return copy_of_fan.size();
 }
 
-// Positions equal to an earlier one, counted with a flat open-addressing table of indices (a node
-// per position in a std::unordered_set was most of this count's time on big meshes).
 std::size_t count_duplicate_positions(const std::vector<Point>& positions) {
-  const std::size_t slots = std::bit_ceil(2 * positions.size() + 1);
-  std::vector<std::uint32_t> table(slots, 0);  // 1 + the index of the position there, 0: empty
-  std::size_t duplicates = 0;
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const PositionKey key(positions[i]);
-    std::size_t slot = PositionHash{}(key) & (slots - 1);
-    while (table[slot] != 0 && !(PositionKey(positions[table[slot] - 1]) == key)) {
-      slot = (slot + 1) & (slots - 1);
-    }
-    if (table[slot] != 0) {
-      ++duplicates;
-    } else {
-      table[slot] = static_cast<std::uint32_t>(i + 1);
-    }
-  }
-  return duplicates;
+  const std::vector<char> duplicate = repeats(
+      positions.size(), [&positions](std::size_t i) { return PositionKey(positions[i]); },
+      PositionHash{});
+  return static_cast<std::size_t>(std::count(duplicate.begin(), duplicate.end(), 1));
+}
+
+// Orients the triangles, marks those to keep apart and splits the vertices where closed fans
+// touch (counted in `report`); returns the marks. One edge_uses serves all three (flips keep the
+// edges), freed before the mesh is assembled.
+std::vector<char> make_consistent(std::vector<Triangle>& triangles, std::vector<Triangle>& corners,
+                                  std::vector<Point>& positions, std::vector<int>& origin,
+                                  LoadReport& report) {
+  std::vector<EdgeUse> uses = edge_uses(triangles);
+  report.faces_flipped = orient_consistently(triangles, corners, uses);
+  std::vector<char> detached = detach_non_manifold(uses, triangles.size());
+  report.vertices_split = split_closed_fans(triangles, uses, detached, positions, origin);
+  return detached;
 }
 
 }  // namespace
@@ -347,17 +363,13 @@ Mesh build_mesh(const Soup& soup, LoadReport& report) {
     triangle_face.resize(triangles.size(), static_cast<int>(f));
   }
   report.duplicate_faces_dropped = drop_duplicate_triangles(triangles, triangle_face, corners);
-  std::vector<EdgeUse> uses = edge_uses(triangles);
-  report.faces_flipped = orient_consistently(triangles, corners, uses);
   if (report.format != "stl") {
     report.duplicate_positions = count_duplicate_positions(soup.positions);
   }
-  const std::vector<char> detached = detach_non_manifold(uses, triangles.size());
   std::vector<Point> positions = soup.positions;
   std::vector<int> origin(positions.size());
   for (std::size_t v = 0; v < origin.size(); ++v) origin[v] = static_cast<int>(v);
-  report.vertices_split = split_closed_fans(triangles, uses, detached, positions, origin);
-  uses = {};
+  const std::vector<char> detached = make_consistent(triangles, corners, positions, origin, report);
   MeshSources sources;
   Mesh mesh = assemble(positions, triangles, detached, soup.positions.size(), report, sources);
   SoupOrigins origins;
