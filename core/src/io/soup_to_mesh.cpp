@@ -81,21 +81,29 @@ void triangulate_face(const Soup& soup, std::size_t f, std::vector<int>& ks,
 }
 
 // Which of the items 0..count-1 have the key of an earlier one, in one pass over a flat
-// open-addressing table of indices (a node per item in a std::unordered_set, or a sort of all the
-// keys, took most of the time of these checks on big meshes).
+// open-addressing table (a node per item in a std::unordered_set, or a sort of all the keys, took
+// most of the time of these checks on big meshes). The slot comes from the hash's high bits
+// after a multiplication (positions' low bits are often all zero), and each entry keeps 32 bits
+// of the hash, so that a full key is read only when those match.
 template <class KeyOf, class Hash>
 std::vector<char> repeats(std::size_t count, KeyOf key_of, Hash hash) {
-  const std::size_t mask = std::bit_ceil(2 * count + 1) - 1;
-  std::vector<std::uint32_t> table(mask + 1, 0);  // 1 + the index of the item there, 0: empty
+  const int bits = std::bit_width(2 * count + 1);
+  std::vector<std::uint64_t> table(std::size_t{1} << bits, 0);  // hash bits, 1 + index (0: empty)
   std::vector<char> repeat(count, 0);
   for (std::size_t i = 0; i < count; ++i) {
     const auto key = key_of(i);
-    std::size_t slot = hash(key) & mask;
-    while (table[slot] != 0 && !(key_of(table[slot] - 1) == key)) slot = (slot + 1) & mask;
+    const std::uint64_t mixed = static_cast<std::uint64_t>(hash(key)) * 0x9E3779B97F4A7C15ull;
+    const std::uint64_t tag = mixed << 32;
+    std::size_t slot = mixed >> (64 - bits);
+    for (; table[slot] != 0; slot = (slot + 1) & (table.size() - 1)) {
+      if ((table[slot] & ~0xFFFFFFFFull) == tag && key_of((table[slot] & 0xFFFFFFFFu) - 1) == key) {
+        break;
+      }
+    }
     if (table[slot] != 0) {
       repeat[i] = 1;
     } else {
-      table[slot] = static_cast<std::uint32_t>(i + 1);
+      table[slot] = tag | static_cast<std::uint32_t>(i + 1);
     }
   }
   return repeat;
