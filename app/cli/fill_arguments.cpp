@@ -1,5 +1,6 @@
 #include "fill_arguments.h"
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <limits>
 #include <utility>

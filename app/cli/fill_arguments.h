@@ -2,13 +2,16 @@
 // library's option structs (so the help prints the real ones), then turned into those structs.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "holefill/fill.h"
 #include "preparation.h"
+
+namespace CLI {
+class App;  // CLI11's (CLI/CLI.hpp): only the .cpp files that register options include it
+}  // namespace CLI
 
 namespace holefill::cli {
 

@@ -1,5 +1,6 @@
 #include "preparation.h"
 
+#include <CLI/CLI.hpp>
 #include <limits>
 #include <ostream>
 

@@ -3,7 +3,6 @@
 // lines that tell the user what was found.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -12,6 +11,10 @@
 #include "holefill/components.h"
 #include "holefill/holes.h"
 #include "holefill/stitch.h"
+
+namespace CLI {
+class App;  // CLI11's (CLI/CLI.hpp): only the .cpp files that register options include it
+}  // namespace CLI
 
 namespace holefill::cli {
 
