@@ -5,19 +5,25 @@
 # SANITIZE_BUILD_DIR) and the suite runs again there; any report fails the run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each phase's start time, so a slow run shows where its time went.
+phase() { echo "test: $(date -u +%T) $*"; }
+phase "install and build"
 scripts/setup.sh
+phase "run the suite"
 (cd "${BUILD_DIR:-build}" && ctest --output-on-failure --parallel "$(nproc)")
 
 if [ "${CI:-}" = true ] || [ "${HOLEFILL_SANITIZE_PASS:-0}" = 1 ]; then
   SANITIZE_DIR=${SANITIZE_BUILD_DIR:-build-asan}
-  echo "test: sanitizer pass in $SANITIZE_DIR"
+  phase "sanitizer build in $SANITIZE_DIR"
   # Not -Werror here: GCC's -Wmaybe-uninitialized misfires inside OpenMesh's headers under ASan.
   # -O1 -g1 halves the compile time of -O2 -g and keeps line numbers in the reports.
   cmake -S . -B "$SANITIZE_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" -DHOLEFILL_SANITIZE=ON \
     -DHOLEFILL_BUILD_VIEWER=OFF -DHOLEFILL_BUILD_BENCH=OFF >/dev/null
   cmake --build "$SANITIZE_DIR" --parallel "$(nproc)"
+  phase "run the suite under the sanitizers"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1 \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir "$SANITIZE_DIR" --output-on-failure --parallel "$(nproc)"
 fi
+phase done
