@@ -110,9 +110,11 @@ void link_boundaries(Mesh& mesh) {
 // where add_face circulates around each corner (quadratic around a vertex with many fans).
 // Preconditions (what the repairs guarantee): every edge is used at most twice, in opposite
 // directions, and a vertex has either one closed fan or only open ones.
-void add_triangles(Mesh& mesh, const std::vector<Triangle>& triangles) {
+void add_triangles(Mesh& mesh, const std::vector<Triangle>& triangles,
+                   std::vector<EdgeUse> known_uses) {
   std::vector<HalfedgeHandle> halfedge(3 * triangles.size());  // corner c to corner c + 1
-  const std::vector<EdgeUse> uses = edge_uses(triangles);
+  const std::vector<EdgeUse> uses =
+      known_uses.empty() ? edge_uses(triangles) : std::move(known_uses);
   for_each_edge(uses, [&](std::size_t i, std::size_t j) {
     const int a = static_cast<int>(uses[i].edge >> 32);
     const int b = static_cast<int>(uses[i].edge & 0xFFFFFFFFu);
@@ -147,7 +149,7 @@ void add_triangles(Mesh& mesh, const std::vector<Triangle>& triangles) {
 // neighbours) are kept, on their own copies of their corners, so no data is lost.
 Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& triangles,
               const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
-              MeshSources& sources) {
+              MeshSources& sources, std::vector<EdgeUse> uses) {
   std::vector<Point> all_positions = positions;
   sources.vertex.resize(positions.size());
   for (std::size_t v = 0; v < positions.size(); ++v) sources.vertex[v] = static_cast<int>(v);
@@ -175,7 +177,9 @@ Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& 
   Mesh mesh;
   mesh.reserve(all_positions.size(), kept.size() * 3 / 2 + 3, kept.size());
   for (const auto& p : all_positions) mesh.add_vertex(p);
-  add_triangles(mesh, kept);
+  // Detached triangles move to the end, on new vertices: the uses of the input are then not theirs.
+  if (!apart.empty()) uses = std::vector<EdgeUse>();
+  add_triangles(mesh, kept, std::move(uses));
   for (std::size_t v = 0; v < original_vertices; ++v) {
     if (mesh.is_isolated(VertexHandle(static_cast<int>(v)))) ++report.isolated_vertices;
   }

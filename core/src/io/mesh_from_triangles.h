@@ -46,10 +46,10 @@ struct MeshSources {
 // copies of their corners (appended after the positions); the others must be consistent: every
 // edge used at most twice, in opposite directions, and each vertex with one closed fan or only
 // open ones. Counts report.faces_detached and the first `original_vertices` vertices no face uses
-// (report.isolated_vertices), and says in `sources` where each element came from. Linear in the
-// triangles.
+// (report.isolated_vertices), and says in `sources` where each element came from. `uses` are the
+// triangles' edge_uses when the caller has them (empty: computed here). Linear in the triangles.
 Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& triangles,
               const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
-              MeshSources& sources);
+              MeshSources& sources, std::vector<EdgeUse> uses = {});
 
 }  // namespace holefill::io

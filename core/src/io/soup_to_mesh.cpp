@@ -346,14 +346,16 @@ std::size_t count_duplicate_positions(const std::vector<Point>& positions) {
 
 // Orients the triangles, marks those to keep apart and splits the vertices where closed fans
 // touch (counted in `report`); returns the marks. One edge_uses serves all three (flips keep the
-// edges), freed before the mesh is assembled.
+// edges); it is handed on in `uses` when it still describes the triangles (no vertex split),
+// else freed before the mesh is assembled.
 std::vector<char> make_consistent(std::vector<Triangle>& triangles, std::vector<Triangle>& corners,
                                   std::vector<Point>& positions, std::vector<int>& origin,
-                                  LoadReport& report) {
-  std::vector<EdgeUse> uses = edge_uses(triangles);
+                                  LoadReport& report, std::vector<EdgeUse>& uses) {
+  uses = edge_uses(triangles);
   report.faces_flipped = orient_consistently(triangles, corners, uses);
   std::vector<char> detached = detach_non_manifold(uses, triangles.size());
   report.vertices_split = split_closed_fans(triangles, uses, detached, positions, origin);
+  if (report.vertices_split) std::vector<EdgeUse>().swap(uses);
   return detached;
 }
 
@@ -377,9 +379,12 @@ Mesh build_mesh(const Soup& soup, LoadReport& report) {
   std::vector<Point> positions = soup.positions;
   std::vector<int> origin(positions.size());
   for (std::size_t v = 0; v < origin.size(); ++v) origin[v] = static_cast<int>(v);
-  const std::vector<char> detached = make_consistent(triangles, corners, positions, origin, report);
+  std::vector<EdgeUse> uses;
+  const std::vector<char> detached =
+      make_consistent(triangles, corners, positions, origin, report, uses);
   MeshSources sources;
-  Mesh mesh = assemble(positions, triangles, detached, soup.positions.size(), report, sources);
+  Mesh mesh = assemble(positions, triangles, detached, soup.positions.size(), report, sources,
+                       std::move(uses));
   SoupOrigins origins;
   origins.vertex.reserve(sources.vertex.size());
   for (const int v : sources.vertex) origins.vertex.push_back(origin[v]);
