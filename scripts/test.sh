@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The whole test suite: installs what is missing, builds, runs every test with ctest.
-# In CI (CI=true), or with HOLEFILL_SANITIZE_PASS=1, the library, the CLI and the tests are then
-# built once more with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/, or
-# SANITIZE_BUILD_DIR) and the suite runs again there; any report fails the run.
+# In CI (CI=true), or with HOLEFILL_SANITIZE_PASS=1, the library and the CLI are then built once
+# more with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/, or SANITIZE_BUILD_DIR),
+# with the tests (themselves not instrumented) that drive them, and the suite runs again there;
+# any report fails the run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # Each phase's start time, so a slow run shows where its time went.
