@@ -161,12 +161,13 @@ TEST(ReaderDefects, ABareTextLineInAPlyHeaderIsSkippedWithAWarning) {
 // A 2 GiB file (sparse: it takes no disk) must be refused from its first bytes, in a child
 // process whose address space (256 MiB) could never hold the file.
 TEST(ReaderDefects, AHugeFileIsRefusedFromItsFirstBytesWithoutReadingItWhole) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit allows";
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-  GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit allows";
-#endif
+  // The child process may address 256 MB, far less than the file: reading it whole would fail.
+  // Under the sanitizers (which reserve terabytes of address space at start) only the refusal
+  // and its reason are checked.
+#if defined(HOLEFILL_SANITIZED_LIBRARY)
+  constexpr bool kLimitMemory = false;
+#else
+  constexpr bool kLimitMemory = true;
 #endif
   const fs::path dir = fs::temp_directory_path() / ("holefill_huge_" + std::to_string(getpid()));
   fs::create_directories(dir);
@@ -187,7 +188,7 @@ TEST(ReaderDefects, AHugeFileIsRefusedFromItsFirstBytesWithoutReadingItWhole) {
     ASSERT_GE(child, 0);
     if (child == 0) {
       const rlimit limit{256u << 20, 256u << 20};
-      setrlimit(RLIMIT_AS, &limit);
+      if (kLimitMemory) setrlimit(RLIMIT_AS, &limit);
       try {
         load_mesh(file);
       } catch (const FileError& e) {
