@@ -16,6 +16,7 @@ constexpr const char* kNormal = "holefill:obj:normal";
 constexpr const char* kMaterial = "holefill:obj:material";
 constexpr const char* kGroup = "holefill:obj:group";
 constexpr const char* kObject = "holefill:obj:object";
+constexpr const char* kSmoothing = "holefill:obj:smoothing";
 
 // The vertices of the patch's faces that the patch did not add (the hole's loops): their
 // values are fixed.
@@ -170,6 +171,7 @@ ObjHandles obj_handles(const Mesh& mesh) {
   mesh.get_property_handle(obj.material, kMaterial);
   mesh.get_property_handle(obj.group, kGroup);
   mesh.get_property_handle(obj.object, kObject);
+  mesh.get_property_handle(obj.smoothing, kSmoothing);
   return obj;
 }
 
@@ -181,13 +183,14 @@ ObjHandles add_obj_handles(Mesh& mesh) {
   detail::find_or_add_property(mesh, obj.material, kMaterial);
   detail::find_or_add_property(mesh, obj.group, kGroup);
   detail::find_or_add_property(mesh, obj.object, kObject);
+  detail::find_or_add_property(mesh, obj.smoothing, kSmoothing);
   return obj;
 }
 
 std::string interpolate_patch_obj_attributes(Mesh& mesh, const Patch& patch) {
   const ObjHandles obj = obj_handles(mesh);
   if (!obj.valid() || patch.faces.empty()) return {};
-  for (const auto property : {obj.material, obj.group, obj.object}) {
+  for (const auto property : {obj.material, obj.group, obj.object, obj.smoothing}) {
     detail::take_majority_along_hole(mesh, patch, property);
   }
   const std::vector<VertexHandle> fixed = fixed_vertices(mesh, patch);

@@ -1,7 +1,7 @@
 // OBJ through tinyobjloader: numbers read exactly, every malformed statement refused
 // with its line, statements holefill drops named in a warning; texture coordinates, normals,
-// materials, groups and material libraries kept bit for bit through load, fill and save, and
-// given to patches where they can be.
+// materials, groups, smoothing groups and material libraries kept bit for bit through load, fill
+// and save, and given to patches where they can be.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -95,10 +95,20 @@ TEST(ObjRead, StatementsNotKeptAreNamedInAWarning) {
   load_mesh_from_memory(std::string(kTriangle) + "s 1\nvp 0.5\ns off\nl 1 2\nf 1 2 3\n", "t.obj",
                         &report);
   EXPECT_EQ(report.elements_ignored, 1u);
-  const auto named = std::find_if(
-      report.warnings.begin(), report.warnings.end(),
-      [](const std::string& w) { return w.find("'s' (2), 'vp' (1)") != std::string::npos; });
-  EXPECT_NE(named, report.warnings.end());
+  const auto named =
+      std::find_if(report.warnings.begin(), report.warnings.end(),
+                   [](const std::string& w) { return w.find("'vp' (1)") != std::string::npos; });
+  ASSERT_NE(named, report.warnings.end());
+  EXPECT_EQ(named->find("'s'"), std::string::npos) << *named;  // smoothing groups are kept
+}
+
+TEST(ObjSave, SmoothingGroupsSavedWhereOnlyObjHoldsThemAreNamed) {
+  const Mesh mesh = load_mesh_from_memory(std::string(kTriangle) + "s 1\nf 1 2 3\n", "t.obj");
+  EXPECT_TRUE(attributes_not_written(mesh, "out.obj").empty());
+  for (const char* name : {"out.ply", "out.off", "out.stl"}) {
+    EXPECT_EQ(attributes_not_written(mesh, name),
+              (std::vector<std::string>{"smoothing groups (only OBJ holds them)"}));
+  }
 }
 
 namespace fs = std::filesystem;
@@ -157,8 +167,9 @@ using Bits = std::array<std::uint64_t, 3>;
 // What a face corner carries, as bits: its vertex, texture coordinate and normal (all ones
 // where it has none).
 using CornerValues = std::tuple<int, Bits, Bits>;
-// A face: its corners from the smallest vertex on, its material, group and object.
-using FaceValues = std::tuple<std::vector<CornerValues>, std::string, std::string, std::string>;
+// A face: its corners from the smallest vertex on, its material, group, object and smoothing group.
+using FaceValues =
+    std::tuple<std::vector<CornerValues>, std::string, std::string, std::string, std::string>;
 
 template <class Vector>
 Bits bits_of(const Vector& value) {
@@ -185,7 +196,8 @@ FaceValues face_values(const Mesh& mesh, FaceHandle f) {
   std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
   return {corners, name_in(tables.materials, mesh.property(obj.material, f)),
           name_in(tables.groups, mesh.property(obj.group, f)),
-          name_in(tables.objects, mesh.property(obj.object, f))};
+          name_in(tables.objects, mesh.property(obj.object, f)),
+          name_in(tables.smoothing_groups, mesh.property(obj.smoothing, f))};
 }
 
 // Every face's values, in no particular order (the writer groups faces).
@@ -258,6 +270,18 @@ TEST_F(ObjFiles, TexturedObjRoundTripsBitForBit) {
   EXPECT_EQ(read(dir_ / "out" / "box2.obj"), written);
 }
 
+TEST_F(ObjFiles, SmoothingGroupsRoundTripBitForBit) {
+  // As holefill writes it: "s" only where the group changes (it lasts across "g"), spelt as read.
+  const std::string text =
+      "# written by holefill\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 2 0 0\nv 2 1 0\nv 3 0 0\n"
+      "f 1 2 3\ns 2\nf 2 4 3\ng rim\nf 2 5 4\ns off\nf 5 6 4\ns 0\nf 5 7 6\n";
+  const Mesh mesh = load_mesh(write("in.obj", text));
+  EXPECT_EQ(mesh.property(obj_handles(mesh).tables).smoothing_groups,
+            (std::vector<std::string>{"2", "off", "0"}));
+  save_mesh(mesh, dir_ / "out.obj");
+  EXPECT_EQ(read(dir_ / "out.obj"), text);
+}
+
 TEST_F(ObjFiles, MaterialLibrariesResolveFromTheOutputsFolder) {
   const fs::path in = write("models/a/box.obj", textured_box());
   const fs::path library = write("models/a/mats/box.mtl", "newmtl wood\n");
@@ -277,8 +301,8 @@ TEST_F(ObjFiles, MaterialLibrariesResolveFromTheOutputsFolder) {
 
 // An icosphere with a hole at its top, textured by a planar projection (one chart) or by two
 // charts meeting at x = 0 (a seam across the hole), with per-vertex normals and a material
-// per side.
-std::string textured_sphere(bool seam) {
+// per side; with smoothing group 4 where x > -0.25 (most of the hole's rim), off elsewhere.
+std::string textured_sphere(bool seam, bool smoothing = false) {
   const Mesh mesh =
       testing::without_faces(testing::make_icosphere(3), [](const Point& c) { return c[2] > 0.8; });
   std::string text = "mtllib s.mtl\n";
@@ -297,12 +321,15 @@ std::string textured_sphere(bool seam) {
     text += statement("vn", {p[0], p[1], p[2]});
   }
   const int n = static_cast<int>(mesh.n_vertices());
-  std::string last;
+  std::string last, last_smoothing;
   for (const auto f : mesh.faces()) {
     const Point centre = mesh.calc_face_centroid(f);
     const std::string material = centre[0] > 0 ? "usemtl east\n" : "usemtl west\n";
     if (material != last) text += material;
     last = material;
+    const std::string group = centre[0] > -0.25 ? "s 4\n" : "s off\n";
+    if (smoothing && group != last_smoothing) text += group;
+    last_smoothing = group;
     const int chart = seam && centre[0] < 0 ? 1 : 0;
     text += "f";
     for (const auto v : mesh.fv_range(f)) {
@@ -354,6 +381,26 @@ TEST_F(ObjFiles, AFillKeepsTheOriginalsAndGivesThePatchUvsInRange) {
   const Mesh again = load_mesh(dir_ / "filled.obj");
   EXPECT_EQ(all_face_values(again), all_face_values(mesh));
   EXPECT_TRUE(find_holes(again).empty());
+}
+
+TEST_F(ObjFiles, APatchTakesTheSmoothingGroupMostFacesAlongTheHoleHave) {
+  Mesh mesh = load_mesh(write("s.obj", textured_sphere(false, true)));
+  const Mesh before = mesh;
+  const auto fills = fill_holes(mesh, find_holes(mesh), FillOptions{});
+  ASSERT_EQ(fills.size(), 1u);
+  ASSERT_FALSE(fills[0].failed());
+  for (const auto f : before.faces()) EXPECT_EQ(face_values(mesh, f), face_values(before, f));
+  // The truth: the groups of the original faces that share an edge with the patch.
+  std::map<std::string, int> votes;
+  for (const auto f : fills[0].patch.faces) {
+    for (const auto g : mesh.ff_range(f)) {
+      if (g.idx() < static_cast<int>(before.n_faces())) ++votes[std::get<4>(face_values(mesh, g))];
+    }
+  }
+  ASSERT_GT(votes["4"], votes["off"]);
+  for (const auto f : fills[0].patch.faces) EXPECT_EQ(std::get<4>(face_values(mesh, f)), "4");
+  save_mesh(mesh, dir_ / "filled.obj");
+  EXPECT_EQ(all_face_values(load_mesh(dir_ / "filled.obj")), all_face_values(mesh));
 }
 
 TEST_F(ObjFiles, AUvSeamAcrossTheHoleLeavesThePatchWithoutUvsAndSaysSo) {

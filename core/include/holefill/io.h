@@ -39,11 +39,11 @@ struct LoadReport {
 
 // Loads a triangle mesh with the attributes its file carries (attributes.h): PLY's vertex and
 // face properties, OFF's colours and normals, OBJ's vertex colours, per-corner texture
-// coordinates and normals, materials, groups and material libraries (obj_attributes.h); what
-// cannot be kept (other PLY elements and lists, OBJ's smoothing groups) is named in a warning. The
-// format is chosen by the file's contents where they are unmistakable (a PLY or OFF header, a
-// binary STL's size) and by its extension otherwise; a file whose extension says otherwise is read
-// by its contents, with a warning.
+// coordinates and normals, materials, groups, smoothing groups and material libraries
+// (obj_attributes.h); what cannot be kept (other PLY elements and lists, OBJ's free-form
+// statements) is named in a warning. The format is chosen by the file's contents where they are
+// unmistakable (a PLY or OFF header, a binary STL's size) and by its extension otherwise; a file
+// whose extension says otherwise is read by its contents, with a warning.
 Mesh load_mesh(const std::filesystem::path& path, LoadReport* report = nullptr);
 
 // Reads a mesh from bytes already in memory; `name` stands in for the path in errors and

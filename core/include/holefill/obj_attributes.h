@@ -1,7 +1,7 @@
 // What an OBJ file carries beyond positions and vertex colours: a texture coordinate (vt) and a
 // normal (vn) per face corner, each face's material (usemtl) and the libraries that define the
-// materials (mtllib), each face's group (g) and object (o). Kept on the mesh as OpenMesh
-// properties so that every stage carries them, and written back by save_mesh as OBJ:
+// materials (mtllib), each face's group (g), object (o) and smoothing group (s). Kept on the mesh
+// as OpenMesh properties so that every stage carries them, and written back by save_mesh as OBJ:
 //   "holefill:obj"           mesh property, ObjTables: the values and names the numbers below
 //                            count into
 //   "holefill:obj:texcoord"  HPropHandleT<int>, per halfedge h with a face: the corner of face(h)
@@ -10,6 +10,8 @@
 //   "holefill:obj:material"  FPropHandleT<int>, materials[n - 1]; 0: none
 //   "holefill:obj:group"     FPropHandleT<int>, groups[n - 1]; 0: none
 //   "holefill:obj:object"    FPropHandleT<int>, objects[n - 1]; 0: none
+//   "holefill:obj:smoothing" FPropHandleT<int>, smoothing_groups[n - 1]; 0: none (before any s
+//                            statement: smoothing off)
 // Numbers count from 1, as in the file, so that the 0 OpenMesh gives an element added later
 // means "none". Original elements keep their numbers, so their values survive bit for bit.
 #pragma once
@@ -33,6 +35,9 @@ struct ObjTables {
   std::vector<std::string> materials;  // usemtl names
   std::vector<std::string> groups;     // g statements' names (several joined by a space)
   std::vector<std::string> objects;    // o names
+  // s statements' values as written ("1", "off", "0", ...): the spelling and a first "s off"
+  // survive a round trip.
+  std::vector<std::string> smoothing_groups;
   // The material libraries (mtllib), as absolute paths: written relative to the output's folder.
   std::vector<std::filesystem::path> material_libraries;
 };
@@ -40,7 +45,7 @@ struct ObjTables {
 struct ObjHandles {
   OpenMesh::MPropHandleT<ObjTables> tables;
   OpenMesh::HPropHandleT<int> texcoord, normal;
-  OpenMesh::FPropHandleT<int> material, group, object;
+  OpenMesh::FPropHandleT<int> material, group, object, smoothing;
   bool valid() const { return tables.is_valid(); }
 };
 
@@ -51,9 +56,9 @@ ObjHandles obj_handles(const Mesh& mesh);
 ObjHandles add_obj_handles(Mesh& mesh);
 
 // Values for the patch's faces and corners (interpolate_patch_attributes calls it): each face
-// takes the material, group and object most original faces along the hole have; texture
-// coordinates are interpolated harmonically from the boundary's when the boundary lies in one
-// chart (each boundary vertex has one texture coordinate on all its original faces), otherwise
+// takes the material, group, object and smoothing group most original faces along the hole have;
+// texture coordinates are interpolated harmonically from the boundary's when the boundary lies in
+// one chart (each boundary vertex has one texture coordinate on all its original faces), otherwise
 // the patch has none; corner normals are the new geometry's (the mean of the patch's face
 // normals around the vertex), a boundary vertex whose original corners share one normal keeps it.
 // Original elements are not touched. Returns a note for the user when something could not be

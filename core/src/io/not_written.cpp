@@ -2,6 +2,7 @@
 // saving says what it leaves out instead of dropping it silently.
 #include <algorithm>
 #include <array>
+#include <utility>
 
 #include "holefill/attributes.h"
 #include "holefill/io.h"
@@ -16,19 +17,29 @@ bool is_colour(const std::string& name) {
 
 bool is_normal(const std::string& name) { return name == "nx" || name == "ny" || name == "nz"; }
 
-// Whether the OBJ tables or numbers hold anything.
-bool carries_obj_values(const Mesh& mesh) {
-  const ObjHandles obj = obj_handles(mesh);
-  if (!obj.valid()) return false;
-  const ObjTables& tables = mesh.property(obj.tables);
-  return !tables.texcoords.empty() || !tables.normals.empty() || !tables.materials.empty() ||
-         !tables.groups.empty() || !tables.objects.empty() || !tables.material_libraries.empty();
-}
-
 std::string joined(const std::vector<std::string>& names) {
   std::string text;
   for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
   return text;
+}
+
+// What the OBJ tables hold ("texture coordinates, smoothing groups"); empty when nothing.
+std::string obj_values_held(const Mesh& mesh) {
+  const ObjHandles obj = obj_handles(mesh);
+  if (!obj.valid()) return {};
+  const ObjTables& tables = mesh.property(obj.tables);
+  const std::pair<bool, const char*> kinds[] = {
+      {!tables.texcoords.empty(), "texture coordinates"},
+      {!tables.normals.empty(), "corner normals"},
+      {!tables.materials.empty() || !tables.material_libraries.empty(), "materials"},
+      {!tables.groups.empty(), "groups"},
+      {!tables.objects.empty(), "objects"},
+      {!tables.smoothing_groups.empty(), "smoothing groups"}};
+  std::vector<std::string> held;
+  for (const auto& [holds, name] : kinds) {
+    if (holds) held.emplace_back(name);
+  }
+  return joined(held);
 }
 
 }  // namespace
@@ -54,10 +65,8 @@ std::vector<std::string> attributes_not_written(const Mesh& mesh,
   std::vector<std::string> lost;
   if (!vertex.empty()) lost.push_back("vertex properties " + joined(vertex));
   if (!face.empty()) lost.push_back("face properties " + joined(face));
-  if (ext != ".obj" && carries_obj_values(mesh)) {
-    lost.push_back(
-        "texture coordinates, corner normals, materials and groups (only OBJ holds them)");
-  }
+  const std::string obj_values = ext == ".obj" ? std::string() : obj_values_held(mesh);
+  if (!obj_values.empty()) lost.push_back(obj_values + " (only OBJ holds them)");
   return lost;
 }
 

@@ -1,8 +1,9 @@
 // OBJ through tinyobjloader (Debian's libtinyobjloader, its double build): its callback API walks
 // the statements and gives the names of materials (usemtl), groups (g) and objects (o) and the
 // files of mtllib. Its numbers are not used: the statements made of numbers (v, vt, vn, f) are
-// read here instead, exactly where tinyobjloader would have called back for them (ObjStatements
-// serves one statement at a time, hands those over, and knows which one is read):
+// read here instead, exactly where tinyobjloader would have called back for them, and so are
+// smoothing groups (s), which it does not report (ObjStatements serves one statement at a time,
+// hands those over, and knows which one is read):
 // - coordinates, colours, texture coordinates and normals with std::from_chars, because
 //   tinyobjloader's parser is not correctly rounded (60-68 % of 17-digit coordinates come back
 //   1-8 ulp off) and original vertices keep their values bit for bit;
@@ -96,6 +97,12 @@ class ObjReading {
   void set_object(std::string_view name) {
     object_ = number_of(trimmed(name), soup.obj.objects, object_numbers_);
   }
+  // "s 1", "s off", "s 0": kept as written (a number, any size, or off) for the faces that follow.
+  void read_smoothing_group() {
+    std::string_view rest = statements_.statement();
+    take_token(rest);
+    smoothing_ = number_of(trimmed(rest), soup.obj.smoothing_groups, smoothing_numbers_);
+  }
   // Checks the indices against what the file defines and moves them into the soup.
   void finish(LoadReport& report);
 
@@ -121,8 +128,9 @@ class ObjReading {
   std::vector<long long> vertex_, texcoord_, normal_;
   bool any_texcoord_ = false, any_normal_ = false;
   std::size_t partial_texcoords_ = 0, partial_normals_ = 0;  // faces with some corners only
-  int material_ = 0, group_ = 0, object_ = 0;
-  std::unordered_map<std::string, int> material_numbers_, group_numbers_, object_numbers_;
+  int material_ = 0, group_ = 0, object_ = 0, smoothing_ = 0;
+  std::unordered_map<std::string, int> material_numbers_, group_numbers_, object_numbers_,
+      smoothing_numbers_;
 };
 
 int ObjReading::read_numbers(double* values, int least, int most, const char* what) const {
@@ -249,6 +257,7 @@ void ObjReading::read_face() {
   set_sparse(soup.face_material, face, material_);
   set_sparse(soup.face_group, face, group_);
   set_sparse(soup.face_object, face, object_);
+  set_sparse(soup.face_smoothing, face, smoothing_);
 }
 
 void ObjReading::check_indices(const std::vector<long long>& indices, std::size_t defined,
@@ -265,7 +274,8 @@ void ObjReading::check_indices(const std::vector<long long>& indices, std::size_
 
 void ObjReading::finish(LoadReport& report) {
   const std::size_t faces = soup.face_count();
-  for (auto* values : {&soup.face_material, &soup.face_group, &soup.face_object}) {
+  for (auto* values :
+       {&soup.face_material, &soup.face_group, &soup.face_object, &soup.face_smoothing}) {
     if (!values->empty()) values->resize(faces, 0);
   }
   check_indices(vertex_, soup.positions.size(), kVertexIndex);
@@ -308,6 +318,8 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) 
       reading.read_texcoord();
     } else if (keyword == "vn") {
       reading.read_normal();
+    } else if (keyword == "s") {
+      reading.read_smoothing_group();
     } else {
       reading.read_face();
     }

@@ -12,8 +12,8 @@ bool continues(std::string_view line) {
 }
 
 // What the reader keeps (through tinyobjloader's callbacks); "fo" is the old spelling of "f".
-constexpr std::array<std::string_view, 9> kKept = {"v",      "vt",     "vn", "f", "fo",
-                                                   "usemtl", "mtllib", "g",  "o"};
+constexpr std::array<std::string_view, 10> kKept = {"v",      "vt",     "vn", "f", "fo",
+                                                    "usemtl", "mtllib", "g",  "o", "s"};
 constexpr std::array<std::string_view, 5> kElements = {"l", "p", "curv", "curv2", "surf"};
 
 }  // namespace
@@ -81,7 +81,7 @@ std::string_view ObjStatements::direct_keyword() const {
   while (end < statement_.size() && !is_blank(statement_[end])) ++end;
   if (end < statement_.size() && statement_[end] != ' ' && statement_[end] != '\t') return {};
   const std::string_view keyword = statement_.substr(start, end - start);
-  if (keyword == "v" || keyword == "vt" || keyword == "vn") return keyword;
+  if (keyword == "v" || keyword == "vt" || keyword == "vn" || keyword == "s") return keyword;
   // tinyobjloader reports a face only when something follows its keyword.
   if (keyword == "f" && statement_.find_first_not_of(" \t", end) != std::string_view::npos) {
     return keyword;

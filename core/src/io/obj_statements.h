@@ -6,7 +6,8 @@
 // line. Statements holefill does not keep are counted here, since tinyobjloader's callbacks
 // never see them. The statements whose numbers are all the reader wants (v, vt, vn, f) can be
 // handed to the reader directly instead (read_directly): tinyobjloader's own pass over them was
-// a third of reading a big OBJ, for numbers that were read again anyway.
+// a third of reading a big OBJ, for numbers that were read again anyway; so can smoothing groups
+// (s), which tinyobjloader's callbacks do not report.
 #pragma once
 
 #include <exception>
@@ -29,15 +30,16 @@ class ObjStatements : public std::streambuf {
   std::size_t line() const { return line_; }
 
   // Lines, points, curves and surfaces (not surfaces holefill fills), and the keywords of other
-  // statements that are not kept (smoothing groups "s", free-form attributes, ...), by count.
+  // statements that are not kept (free-form attributes "vp", "deg", ...), by count.
   std::size_t elements_ignored() const { return elements_ignored_; }
   const std::map<std::string, std::size_t>& not_kept() const { return not_kept_; }
   // Faces with no corners (tinyobjloader skips them).
   std::size_t empty_faces() const { return empty_faces_; }
 
   // From now on each statement that tinyobjloader would take for a vertex ("v"), texture
-  // coordinate ("vt"), normal ("vn") or face with corners ("f", "fo") goes to `read` with its
-  // keyword ("fo" as "f"), in the file's order among the served ones, instead of being served.
+  // coordinate ("vt"), normal ("vn") or face with corners ("f", "fo"), and each smoothing group
+  // ("s"), goes to `read` with its keyword ("fo" as "f"), in the file's order among the served
+  // ones, instead of being served.
   // What `read` throws ends the stream; rethrow_failure() throws it again.
   void read_directly(std::function<void(std::string_view keyword)> read) {
     read_directly_ = std::move(read);

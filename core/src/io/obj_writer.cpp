@@ -1,7 +1,7 @@
 // OBJ: mtllib (its files named relative to the output's folder), vertices with their colours,
 // the texture coordinates and normals (every one the file had, in its order, then those of
 // patches that faces use), and the faces grouped by object and group in the order these first
-// appear, with o, g and usemtl wherever they change.
+// appear, with o, g, usemtl and s wherever they change (a file without s gets none).
 #include <algorithm>
 #include <array>
 #include <filesystem>
@@ -149,7 +149,7 @@ void append_face(const Mesh& mesh, FaceHandle f, const ObjHandles& obj,
 void append_faces_with_states(const Mesh& mesh, const ObjHandles& obj, const ObjTables& tables,
                               const std::vector<int>& texcoord, const std::vector<int>& normal,
                               std::string& out) {
-  int object = 0, group = 0, material = 0;
+  int object = 0, group = 0, material = 0, smoothing = 0;
   // Writes "<keyword> <name>" when a face's number differs from the current one.
   auto switch_to = [&out](int& current, int number, const char* keyword,
                           const std::vector<std::string>& names, const char* none) {
@@ -164,6 +164,7 @@ void append_faces_with_states(const Mesh& mesh, const ObjHandles& obj, const Obj
     switch_to(object, mesh.property(obj.object, f), "o", tables.objects, "");
     switch_to(group, mesh.property(obj.group, f), "g", tables.groups, "default");
     switch_to(material, mesh.property(obj.material, f), "usemtl", tables.materials, "");
+    switch_to(smoothing, mesh.property(obj.smoothing, f), "s", tables.smoothing_groups, "off");
     append_face(mesh, f, obj, texcoord, normal, out);
   }
 }

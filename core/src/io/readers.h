@@ -24,8 +24,8 @@ Format sniff(std::string_view bytes);
 
 // OBJ through tinyobjloader (obj_reader.cpp says who reads what): positions and colours, faces
 // (polygons of any size; relative indices) with their texture coordinates, normals, materials,
-// groups and objects, and the material libraries; lines, points and curves are counted in
-// report.elements_ignored, other statements not kept named in a warning.
+// groups, objects and smoothing groups, and the material libraries; lines, points and curves are
+// counted in report.elements_ignored, other statements not kept named in a warning.
 Soup parse_obj(std::string_view text, const std::filesystem::path& path, LoadReport& report);
 
 // ASCII OFF, 3D, with the optional ST/C/N prefixes of the keyword. Lines after the counted

@@ -31,10 +31,11 @@ struct Soup {
   std::vector<std::vector<double>> face_values;
   // What an OBJ carries per corner and per face (obj_attributes.h): the tables, then per corner
   // (parallel to corners) the texture coordinate and normal numbers, per face the material,
-  // group and object numbers (1-based into the tables, 0: none); each empty when none is used.
+  // group, object and smoothing group numbers (1-based into the tables, 0: none); each empty when
+  // none is used.
   ObjTables obj;
   std::vector<int> corner_texcoord, corner_normal;
-  std::vector<int> face_material, face_group, face_object;
+  std::vector<int> face_material, face_group, face_object, face_smoothing;
   std::size_t face_begin(std::size_t f) const { return f == 0 ? 0 : face_end[f - 1]; }
   std::size_t face_count() const { return face_end.size(); }
   // Closes the face whose last corner is corners[end - 1] (corners may be filled later).

@@ -23,8 +23,9 @@ void copy_layout_values(const Soup& soup, const SoupOrigins& origins, Mesh& mesh
 
 bool has_obj_values(const Soup& soup) {
   return has_corner_values(soup) || !soup.face_material.empty() || !soup.face_group.empty() ||
-         !soup.face_object.empty() || !soup.obj.material_libraries.empty() ||
-         !soup.obj.texcoords.empty() || !soup.obj.normals.empty();
+         !soup.face_object.empty() || !soup.face_smoothing.empty() ||
+         !soup.obj.material_libraries.empty() || !soup.obj.texcoords.empty() ||
+         !soup.obj.normals.empty();
 }
 
 // Each halfedge of a face gets the numbers of the soup corner at its end vertex.
@@ -51,7 +52,8 @@ void copy_obj_values(const Soup& soup, const SoupOrigins& origins, Mesh& mesh) {
   const std::pair<const std::vector<int>*, OpenMesh::FPropHandleT<int>> per_face[] = {
       {&soup.face_material, obj.material},
       {&soup.face_group, obj.group},
-      {&soup.face_object, obj.object}};
+      {&soup.face_object, obj.object},
+      {&soup.face_smoothing, obj.smoothing}};
   for (const auto& [values, property] : per_face) {
     if (values->empty()) continue;
     for (const auto f : mesh.faces()) mesh.property(property, f) = (*values)[origins.face[f.idx()]];

@@ -2,7 +2,7 @@
 // reads back to the same value (std::to_chars), so a round trip keeps every bit. PLY is written
 // in the encoding and types the mesh was read with (attributes.h's layout: float stays float)
 // with every attribute; OFF with its colours and normals (COFF, NOFF); OBJ with vertex colours,
-// texture coordinates, normals, materials, groups and objects (obj_attributes.h).
+// texture coordinates, normals, materials, groups, objects and smoothing groups (obj_attributes.h).
 #pragma once
 
 #include <filesystem>
