@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_set>
 
 #include "geometry.h"
+#include "patch_face_set.h"
 
 namespace holefill {
 namespace {
@@ -22,11 +22,11 @@ bool clearly_delaunay(const Point& a, const Point& b, const Point& c, const Poin
 
 // An edge the refinement may swap: both its faces belong to this patch (so it is neither on the
 // hole's boundary nor in the original mesh), and the swapped edge does not exist yet.
-bool swappable(const Mesh& mesh, const std::unordered_set<int>& patch_faces, EdgeHandle e) {
+bool swappable(const Mesh& mesh, const detail::PatchFaceSet& patch_faces, EdgeHandle e) {
   const auto h0 = mesh.halfedge_handle(e, 0), h1 = mesh.halfedge_handle(e, 1);
-  const FaceHandle f0 = mesh.face_handle(h0), f1 = mesh.face_handle(h1);
-  if (!f0.is_valid() || !f1.is_valid()) return false;
-  if (!patch_faces.count(f0.idx()) || !patch_faces.count(f1.idx())) return false;
+  if (!patch_faces.contains(mesh.face_handle(h0)) || !patch_faces.contains(mesh.face_handle(h1))) {
+    return false;
+  }
   return should_swap_edge(mesh, e) && mesh.is_flip_ok(e);  // the geometric test is cheaper
 }
 
@@ -35,7 +35,7 @@ bool swappable(const Mesh& mesh, const std::unordered_set<int>& patch_faces, Edg
 constexpr int kMaxRelaxSweeps = 100;
 constexpr int kMaxRefineRounds = 200;
 
-std::size_t relax_edges(Mesh& mesh, const std::unordered_set<int>& patch_faces,
+std::size_t relax_edges(Mesh& mesh, const detail::PatchFaceSet& patch_faces,
                         const std::vector<FaceHandle>& faces) {
   std::size_t swaps = 0;
   for (int sweep = 0; sweep < kMaxRelaxSweeps; ++sweep) {
@@ -58,12 +58,6 @@ std::size_t relax_edges(Mesh& mesh, const std::unordered_set<int>& patch_faces,
   return swaps;
 }
 
-std::unordered_set<int> face_ids(const Patch& patch) {
-  std::unordered_set<int> ids;
-  for (const auto f : patch.faces) ids.insert(f.idx());
-  return ids;
-}
-
 // RefineOptions::max_density's cap on the new vertices of this patch; 0 when there is none (no
 // cap asked for, or no boundary scale to measure the density by). Needs the boundary scales.
 std::size_t vertex_cap(Mesh& mesh, const Patch& patch, double max_density) {
@@ -81,15 +75,15 @@ std::size_t vertex_cap(Mesh& mesh, const Patch& patch, double max_density) {
 
 void assign_boundary_scales(Mesh& mesh, const Patch& patch) {
   PatchTags tags(mesh);
-  const std::unordered_set<int> patch_faces = face_ids(patch);
+  const detail::PatchFaceSet patch_faces(patch);
   for (const auto v : patch.boundary) {
     double total = 0.0;
     int count = 0;
     for (const auto h : mesh.voh_range(v)) {
       const FaceHandle left = mesh.face_handle(h);
       const FaceHandle right = mesh.opposite_face_handle(h);
-      const bool original = (left.is_valid() && !patch_faces.count(left.idx())) ||
-                            (right.is_valid() && !patch_faces.count(right.idx()));
+      const bool original = (left.is_valid() && !patch_faces.contains(left)) ||
+                            (right.is_valid() && !patch_faces.contains(right));
       if (!original) continue;
       total += mesh.calc_edge_length(h);
       ++count;
@@ -99,14 +93,14 @@ void assign_boundary_scales(Mesh& mesh, const Patch& patch) {
 }
 
 std::size_t relax_patch_edges(Mesh& mesh, const Patch& patch) {
-  return relax_edges(mesh, face_ids(patch), patch.faces);
+  return relax_edges(mesh, detail::PatchFaceSet(patch), patch.faces);
 }
 
 RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options) {
   RefineResult result;
   PatchTags tags(mesh);
   assign_boundary_scales(mesh, patch);
-  std::unordered_set<int> patch_faces = face_ids(patch);
+  detail::PatchFaceSet patch_faces(patch);
   const double tau = options.tau;
   result.vertex_cap = vertex_cap(mesh, patch, options.max_density);
 
@@ -146,7 +140,7 @@ RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options
       mesh.property(tags.vertex_stage, center) = static_cast<std::uint8_t>(Stage::Refined);
       patch.new_vertices.push_back(center);
       for (const auto nf : mesh.vf_range(center)) {
-        if (patch_faces.insert(nf.idx()).second) patch.faces.push_back(nf);
+        if (patch_faces.insert(nf)) patch.faces.push_back(nf);
         mesh.property(tags.face_stage, nf) = static_cast<std::uint8_t>(Stage::Refined);
       }
       for (const auto e : old_edges) {

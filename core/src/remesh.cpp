@@ -5,28 +5,20 @@
 #include <cmath>
 #include <optional>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "geometry.h"
 #include "holefill/triangulate.h"
+#include "patch_face_set.h"
 
 namespace holefill {
 namespace {
 
 constexpr int kRegularValence = 6;
 
-using FaceSet = std::unordered_set<int>;
+using FaceSet = detail::PatchFaceSet;
 
-FaceSet face_set(const Patch& patch) {
-  FaceSet ids;
-  for (const auto f : patch.faces) ids.insert(f.idx());
-  return ids;
-}
-
-bool in_patch(const FaceSet& patch_faces, FaceHandle f) {
-  return f.is_valid() && patch_faces.count(f.idx());
-}
+bool in_patch(const FaceSet& patch_faces, FaceHandle f) { return patch_faces.contains(f); }
 
 // target_valence(), with the patch's faces as a set.
 int target_valence_in(const Mesh& mesh, const FaceSet& patch_faces, VertexHandle v) {
@@ -98,7 +90,7 @@ class PatchRemesher {
       : mesh_(mesh),
         patch_(patch),
         tags_(mesh),
-        patch_faces_(face_set(patch)),
+        patch_faces_(patch),
         max_dihedral_(options.max_flip_dihedral_deg * M_PI / 180.0) {
     for (const auto v : patch.boundary) {
       target_[v.idx()] = target_valence_in(mesh, patch_faces_, v);
@@ -230,7 +222,7 @@ class PatchRemesher {
 }  // namespace
 
 int target_valence(const Mesh& mesh, const Patch& patch, VertexHandle vertex) {
-  return target_valence_in(mesh, face_set(patch), vertex);
+  return target_valence_in(mesh, FaceSet(patch), vertex);
 }
 
 RemeshResult remesh_patch(Mesh& mesh, const Patch& patch, const RemeshOptions& options) {

@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <random>
+#include <set>
 
 #include "holefill/fill.h"
 #include "holefill/holes.h"
+#include "patch_face_set.h"
 #include "test_meshes.h"
 
 namespace holefill {
@@ -94,6 +96,27 @@ TEST(Refine, SwapTestFollowsTheOppositeAngleRule) {
   }
   EXPECT_GT(swaps, 500);  // both outcomes are exercised
   EXPECT_LT(swaps, 3500);
+}
+
+// The refinement's face set against std::set: faces from the patch, newer ones added, and (never
+// while refining, but allowed) older ones.
+TEST(Refine, PatchFaceSetAnswersLikeASet) {
+  std::mt19937 rng(5);
+  Patch patch;
+  std::set<int> expected;
+  for (int i = 0; i < 40; ++i) {
+    const int id = 1000 + static_cast<int>(rng() % 200);
+    patch.faces.push_back(FaceHandle(id));
+    expected.insert(id);
+  }
+  detail::PatchFaceSet set(patch);
+  for (int i = 0; i < 300; ++i) {
+    const int id = static_cast<int>(rng() % 1600);
+    EXPECT_EQ(set.insert(FaceHandle(id)), expected.insert(id).second) << id;
+  }
+  for (int id = -1; id < 1700; ++id) {
+    EXPECT_EQ(set.contains(FaceHandle(id)), expected.count(id) > 0) << id;
+  }
 }
 
 }  // namespace
