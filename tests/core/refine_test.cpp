@@ -10,12 +10,16 @@
 
 #include "holefill/fill.h"
 #include "holefill/holes.h"
+#include "holefill/io.h"
+#include "island_meshes.h"
 #include "patch_face_set.h"
+#include "refine_reference.h"
 #include "test_meshes.h"
 
 namespace holefill {
 namespace {
 
+using testing::first_difference;
 using testing::sphere_with_two_holes;
 
 TEST(Refine, PatchEdgesTrackTheSurroundingDensity) {
@@ -117,6 +121,239 @@ TEST(Refine, PatchFaceSetAnswersLikeASet) {
   for (int id = -1; id < 1700; ++id) {
     EXPECT_EQ(set.contains(FaceHandle(id)), expected.count(id) > 0) << id;
   }
+}
+
+// Refinement on flat arrays against the OpenMesh refinement it replaced (refine_reference.h):
+// every hole of `holed` triangulated, then each patch refined by both, patch after patch on one
+// mesh (so that the earlier patches' faces are not the newest), must give the same mesh handle
+// for handle, the same patch lists and the same counts.
+struct Seen {
+  std::size_t patches = 0, splits = 0, swaps = 0, vertex_cap_stops = 0, face_limit_stops = 0;
+};
+
+void expect_same_result(const RefineResult& result, const RefineResult& reference,
+                        const std::string& where) {
+  EXPECT_EQ(result.splits, reference.splits) << where;
+  EXPECT_EQ(result.swaps, reference.swaps) << where;
+  EXPECT_EQ(result.vertex_cap, reference.vertex_cap) << where;
+  EXPECT_EQ(result.stopped_at_vertex_cap, reference.stopped_at_vertex_cap) << where;
+  EXPECT_EQ(result.stopped_at_face_limit, reference.stopped_at_face_limit) << where;
+  EXPECT_EQ(result.remeshing.flips, reference.remeshing.flips) << where;
+  EXPECT_EQ(result.remeshing.moves, reference.remeshing.moves) << where;
+}
+
+// A mesh with every hole triangulated, and the patches.
+struct Triangulated {
+  Mesh mesh;
+  std::vector<HoleFill> fills;
+};
+
+Triangulated triangulate_holes(const Mesh& holed) {
+  Triangulated result{holed, {}};
+  FillOptions triangulation;
+  triangulation.last_stage = Stage::Triangulated;
+  result.fills = fill_holes(result.mesh, find_holes(holed), triangulation);
+  return result;
+}
+
+Seen expect_refined_as_before(const Triangulated& triangulated, const RefineOptions& options,
+                              const std::string& what) {
+  const auto& [mesh, fills] = triangulated;
+  Mesh expected = mesh, actual = mesh;
+  Seen seen;
+  for (const auto& fill : fills) {
+    if (fill.failed()) continue;
+    const std::string where = what + ", hole " + std::to_string(fill.hole_id);
+    Patch want = fill.patch, got = fill.patch;
+    RefineResult reference = testing::reference_refine_patch(expected, want, options);
+    if (options.remesh) reference.remeshing = remesh_patch(expected, want, options.remeshing);
+    const RefineResult result = refine_patch(actual, got, options);
+    expect_same_result(result, reference, where);
+    EXPECT_EQ(got.faces, want.faces) << where;
+    EXPECT_EQ(got.new_vertices, want.new_vertices) << where;
+    EXPECT_EQ(first_difference(expected, actual), "") << where;
+    ++seen.patches;
+    seen.splits += result.splits;
+    seen.swaps += result.swaps;
+    seen.vertex_cap_stops += result.stopped_at_vertex_cap;
+    seen.face_limit_stops += result.stopped_at_face_limit;
+  }
+  return seen;
+}
+
+RefineOptions with_tau(double tau) {
+  RefineOptions options;
+  options.tau = tau;
+  return options;
+}
+
+TEST(Refine, FlatArraysRefineTheAssetsAsOpenMeshDid) {
+  Seen all;
+  for (const char* asset :
+       {"bunny.obj", "heart.obj", "sphere.obj", "torus.obj", "ragged_disk.obj"}) {
+    const auto triangulated =
+        triangulate_holes(load_mesh(std::string(HOLEFILL_ASSETS_DIR) + "/" + asset));
+    for (const double tau : {1.0, std::sqrt(2.0), 2.0}) {
+      const Seen seen = expect_refined_as_before(
+          triangulated, with_tau(tau), std::string(asset) + " tau " + std::to_string(tau));
+      all.patches += seen.patches;
+      all.splits += seen.splits;
+      all.swaps += seen.swaps;
+    }
+  }
+  EXPECT_GT(all.patches, 20u);
+  EXPECT_GT(all.splits, 5000u);
+  EXPECT_GT(all.swaps, 1000u);
+}
+
+// A bumpy closed blob with a hole of wavy outline around a direction that each seed draws.
+Mesh blob_with_wavy_hole(unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const Point axis = Point(unit(rng), unit(rng), unit(rng) + 2.0).normalized();
+  const Point across = OpenMesh::cross(axis, Point(1, 0, 0)).normalized();
+  const Point third = OpenMesh::cross(axis, across);
+  const double reach = 0.5 + 0.3 * unit(rng), wave = 0.3 * unit(rng), phase = 3.0 * unit(rng);
+  const int lobes = 2 + static_cast<int>(rng() % 5);
+  const Mesh blob = testing::make_blob(4, [](const Point& d) {
+    return 1.0 + 0.1 * std::sin(4.0 * d[0]) * std::cos(3.0 * d[1] + 1.0);
+  });
+  return testing::without_faces(blob, [&](const Point& c) {
+    const Point d = c.normalized();
+    const double azimuth = std::atan2(OpenMesh::dot(d, third), OpenMesh::dot(d, across));
+    return std::acos(OpenMesh::dot(d, axis)) <
+           reach * (1.0 + wave * std::sin(lobes * azimuth + phase));
+  });
+}
+
+TEST(Refine, FlatArraysRefineGeneratedHolesAsOpenMeshDid) {
+  Seen all;
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    const auto triangulated = triangulate_holes(blob_with_wavy_hole(seed));
+    for (const double tau : {1.2, std::sqrt(2.0), 3.0}) {
+      const Seen seen = expect_refined_as_before(
+          triangulated, with_tau(tau),
+          "wavy hole " + std::to_string(seed) + " tau " + std::to_string(tau));
+      all.splits += seen.splits;
+      all.swaps += seen.swaps;
+    }
+  }
+  expect_refined_as_before(triangulate_holes(testing::grid_with_square_holes(13)), with_tau(6.0),
+                           "square holes");
+  expect_refined_as_before(triangulate_holes(sphere_with_two_holes()), with_tau(1.7), "sphere");
+  const Mesh islands = testing::cut_around_islands(
+      testing::make_blob(3, [](const Point&) { return 1.0; }), {Point(0, 0, 1), 0.9},
+      {{Point(0, 0, 1), 0.25}, {Point(0.5, 0, 0.85).normalized(), 0.12}});
+  const Seen seen = expect_refined_as_before(triangulate_holes(islands), with_tau(1.3), "islands");
+  EXPECT_EQ(seen.patches, 1u);
+  EXPECT_GT(all.splits, 2000u);
+  EXPECT_GT(all.swaps, 500u);
+}
+
+// The vertex cap and the face limit stop the flat refinement where they stopped OpenMesh's.
+TEST(Refine, FlatArraysStopWhereOpenMeshStopped) {
+  const Mesh heart = load_mesh(std::string(HOLEFILL_ASSETS_DIR) + "/heart.obj");
+  RefineOptions capped = with_tau(6.0);
+  capped.max_density = 4.0;
+  const Seen at_cap =
+      expect_refined_as_before(triangulate_holes(heart), capped, "heart, vertex cap");
+  EXPECT_GT(at_cap.vertex_cap_stops, 0u);
+  RefineOptions limited = with_tau(2.0);
+  const auto blob = triangulate_holes(blob_with_wavy_hole(3));
+  for (const std::size_t limit : {60, 151}) {
+    limited.max_patch_faces = limit;
+    const Seen at_limit =
+        expect_refined_as_before(blob, limited, "face limit " + std::to_string(limit));
+    EXPECT_EQ(at_limit.face_limit_stops, 1u);
+  }
+}
+
+// With remeshing after it, which reads the mesh that the flat refinement wrote.
+TEST(Refine, FlatArraysThenRemeshingAsBefore) {
+  RefineOptions options = with_tau(std::sqrt(2.0));
+  options.remesh = true;
+  const Seen seen =
+      expect_refined_as_before(triangulate_holes(blob_with_wavy_hole(4)), options, "remeshed");
+  EXPECT_GT(seen.splits, 100u);
+}
+
+// relax_patch_edges on filled patches whose new vertices were then moved at random, up to
+// `roughness` in each direction (the blob's edges are about 0.055 long): the rougher, the more
+// swaps, and the more often the edge a swap would make exists already.
+std::size_t expect_relaxed_as_before(unsigned seed, double roughness) {
+  Mesh expected = blob_with_wavy_hole(seed);
+  FillOptions options;
+  options.refine.tau = 1.2;
+  const auto fills = fill_holes(expected, find_holes(expected), options);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> shift(-roughness, roughness);
+  for (const auto& fill : fills) {
+    for (const auto v : fill.patch.new_vertices) {
+      expected.point(v) += Point(shift(rng), shift(rng), shift(rng));
+    }
+  }
+  Mesh actual = expected;
+  std::size_t swaps = 0;
+  for (const auto& fill : fills) {
+    const std::size_t reference = testing::reference_relax_patch_edges(expected, fill.patch);
+    EXPECT_EQ(relax_patch_edges(actual, fill.patch), reference) << "seed " << seed;
+    EXPECT_EQ(first_difference(expected, actual), "") << "seed " << seed;
+    swaps += reference;
+  }
+  return swaps;
+}
+
+TEST(Refine, FlatRelaxationSwapsAsOpenMeshDid) {
+  std::size_t swaps = 0;
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    for (const double roughness : {0.01, 0.04}) swaps += expect_relaxed_as_before(seed, roughness);
+  }
+  EXPECT_GT(swaps, 200u);
+}
+
+// Closed, spiky little meshes taken whole as a patch: on these many a swap would make an edge
+// that exists already (which OpenMesh's is_flip_ok refuses), made by an earlier swap or not.
+TEST(Refine, FlatArraysRefuseSwapsThatDoubleAnEdge) {
+  std::size_t swaps = 0;
+  for (unsigned seed = 0; seed < 100; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> radius(0.2, 1.8);
+    Mesh expected = testing::make_icosphere(1 + seed % 2);
+    for (const auto v : expected.vertices()) expected.point(v) *= radius(rng);
+    Patch want;
+    for (const auto f : expected.faces()) want.faces.push_back(f);
+    Patch got = want;
+    Mesh actual = expected;
+    const std::size_t reference = testing::reference_relax_patch_edges(expected, want);
+    EXPECT_EQ(relax_patch_edges(actual, got), reference) << "seed " << seed;
+    EXPECT_EQ(first_difference(expected, actual), "") << "seed " << seed;
+    RefineOptions options;
+    options.max_patch_faces = 700;  // no boundary: every face is too coarse
+    testing::reference_refine_patch(expected, want, options);
+    refine_patch(actual, got, options);
+    EXPECT_EQ(got.faces, want.faces) << "seed " << seed;
+    EXPECT_EQ(first_difference(expected, actual), "") << "seed " << seed;
+    swaps += reference;
+  }
+  EXPECT_GT(swaps, 100u);
+}
+
+// Two triangles glued back to back: each edge's two faces have the same third corner, whose
+// obtuse angle asks for a swap that would join that corner to itself.
+TEST(Refine, FlatArraysRefuseSwapsOnAPillow) {
+  Mesh expected;
+  const VertexHandle a = expected.add_vertex(Point(0, 0, 0)),
+                     b = expected.add_vertex(Point(2, 0, 0)),
+                     c = expected.add_vertex(Point(1, 0.3, 0));
+  expected.add_face(a, b, c);
+  expected.add_face(b, a, c);
+  Patch patch;
+  for (const auto f : expected.faces()) patch.faces.push_back(f);
+  EXPECT_TRUE(should_swap_edge(expected, expected.edge_handle(expected.find_halfedge(a, b))));
+  Mesh actual = expected;
+  EXPECT_EQ(testing::reference_relax_patch_edges(expected, patch), 0u);
+  EXPECT_EQ(relax_patch_edges(actual, patch), 0u);
+  EXPECT_EQ(first_difference(expected, actual), "");
 }
 
 }  // namespace
