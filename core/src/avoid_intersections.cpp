@@ -23,7 +23,7 @@ std::vector<WeightKind> weights_in_order(WeightKind chosen) {
 
 class Checker {
  public:
-  Checker(const Mesh& mesh, const HolePolygon& polygon, const FaceGrid* around)
+  Checker(const Mesh& mesh, const HolePolygon& polygon, const MeshFaceIndex* around)
       : mesh_(mesh), polygon_(polygon), around_(around) {}
 
   std::vector<IntersectingPair> pairs(const PolygonTriangulation& triangulation) {
@@ -35,18 +35,21 @@ class Checker {
   }
 
  private:
-  // The mesh's grid: the caller's, or one made on the first round that needs it.
-  const FaceGrid* grid() {
+  // The mesh's faces: the caller's index, or one of the faces near the polygon made on the first
+  // round that needs it.
+  const MeshFaceIndex* grid() {
     if (around_ || checks_++ == 0) return around_;
-    own_.emplace(FaceGrid::of_mesh(mesh_));
+    Box reach;
+    for (const auto& p : polygon_.points) reach.add(p);
+    own_.emplace(mesh_, std::vector<Box>{reach});
     around_ = &*own_;
     return around_;
   }
 
   const Mesh& mesh_;
   const HolePolygon& polygon_;
-  const FaceGrid* around_;
-  std::optional<FaceGrid> own_;
+  const MeshFaceIndex* around_;
+  std::optional<MeshFaceIndex> own_;
   int checks_ = 0;
 };
 
@@ -64,8 +67,9 @@ void forbid(const PolygonTriangulation& triangulation, const std::vector<Interse
 
 PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
                                          PlannedTriangulation plan,
-                                         const TriangulateOptions& options, const FaceGrid* around,
-                                         IntersectionAvoidance& report, std::size_t& pairs) {
+                                         const TriangulateOptions& options,
+                                         const MeshFaceIndex* around, IntersectionAvoidance& report,
+                                         std::size_t& pairs) {
   report = {};
   pairs = 0;
   if (!plan.triangulation) return plan;

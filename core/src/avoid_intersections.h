@@ -8,9 +8,9 @@
 // keeps good triangles where the weight allows. When none is found the plan stays as it was.
 #pragma once
 
-#include "face_grid.h"
 #include "hole_triangulation.h"
 #include "holefill/fill.h"
+#include "mesh_face_index.h"
 
 namespace holefill::detail {
 
@@ -20,7 +20,8 @@ namespace holefill::detail {
 // the triangulation returned.
 PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
                                          PlannedTriangulation plan,
-                                         const TriangulateOptions& options, const FaceGrid* around,
-                                         IntersectionAvoidance& report, std::size_t& pairs);
+                                         const TriangulateOptions& options,
+                                         const MeshFaceIndex* around, IntersectionAvoidance& report,
+                                         std::size_t& pairs);
 
 }  // namespace holefill::detail

@@ -60,16 +60,6 @@ FaceGrid::FaceGrid(std::vector<std::pair<int, Box>> boxes) : entries_(std::move(
   std::sort(cells_.begin(), cells_.end());
 }
 
-FaceGrid FaceGrid::of_mesh(const Mesh& mesh, const std::vector<bool>& skip) {
-  std::vector<std::pair<int, Box>> boxes;
-  boxes.reserve(mesh.n_faces());
-  for (const auto f : mesh.faces()) {
-    if (static_cast<std::size_t>(f.idx()) < skip.size() && skip[f.idx()]) continue;
-    boxes.emplace_back(f.idx(), box_of(mesh, f));
-  }
-  return FaceGrid(std::move(boxes));
-}
-
 std::optional<FaceGrid::CellRange> FaceGrid::cell_range(const Box& box) const {
   CellRange range;
   range.cells = 1.0;

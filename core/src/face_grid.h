@@ -1,5 +1,6 @@
-// A uniform grid over the bounding boxes of a mesh's faces, so that the faces near a patch are
-// found without scanning the whole mesh for every stage of every hole. The arithmetic is safe for
+// A uniform grid over the bounding boxes of faces (a patch's triangles, the mesh's faces near the
+// holes: mesh_face_index.h), so that the faces near a box are found without scanning them all for
+// every stage of every hole. The arithmetic is safe for
 // any coordinates, however large: a box whose cells cannot be counted in finite numbers is kept
 // in a list that every lookup scans.
 #pragma once
@@ -46,16 +47,6 @@ class FaceGrid {
   // Files each (id, box) under the cells its box touches; cells are twice the boxes' mean extent.
   explicit FaceGrid(std::vector<std::pair<int, Box>> boxes);
 
-  // Every face of the mesh except those `skip` marks (indexed by face index), ids = face indices.
-  static FaceGrid of_mesh(const Mesh& mesh, const std::vector<bool>& skip = {});
-
-  // An entry added after the grid was built: scanned by every lookup (meant for few entries,
-  // such as a finished patch's faces).
-  void add(int id, const Box& box) {
-    unfiled_.push_back(entries_.size());
-    entries_.emplace_back(id, box);
-  }
-
   // The ids of the entries whose boxes overlap `box`, ascending, each once.
   std::vector<int> near(const Box& box) const;
 
@@ -69,7 +60,7 @@ class FaceGrid {
   double cell_ = 1.0;
   std::vector<std::pair<int, Box>> entries_;
   std::vector<std::pair<std::uint64_t, std::size_t>> cells_;  // (cell key, entry), sorted
-  std::vector<std::size_t> unfiled_;  // entries in no cell: too large, or added later
+  std::vector<std::size_t> unfiled_;                          // entries in no cell: too large
 };
 
 }  // namespace holefill::detail

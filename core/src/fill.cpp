@@ -10,7 +10,6 @@
 #include <thread>
 
 #include "avoid_intersections.h"
-#include "face_grid.h"
 #include "hole_triangulation.h"
 #include "holefill/attributes.h"
 #include "holefill/loop_groups.h"
@@ -31,7 +30,7 @@ double timed(Work&& work) {
 // The pairs count_patch_intersections counts; `around` (when given) holds every face of the mesh
 // but the patch's, so that only faces near the patch are looked at.
 std::size_t count_intersections(const Mesh& mesh, const Patch& patch,
-                                const detail::FaceGrid* around) {
+                                const detail::MeshFaceIndex* around) {
   return detail::patch_intersections(mesh, patch, around).size();
 }
 
@@ -53,8 +52,8 @@ void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options) {
 
 // Why a finished stage must be undone: it made a degenerate triangle, or it made a patch that
 // did not intersect the mesh intersect it. Empty when the stage may stay.
-std::string stage_problem(const Mesh& mesh, const HoleFill& fill, const detail::FaceGrid* index,
-                          std::size_t& intersections) {
+std::string stage_problem(const Mesh& mesh, const HoleFill& fill,
+                          const detail::MeshFaceIndex* index, std::size_t& intersections) {
   if (detail::has_degenerate_face(mesh, fill.patch)) {
     return "it made a degenerate (zero-area) triangle";
   }
@@ -68,7 +67,7 @@ std::string stage_problem(const Mesh& mesh, const HoleFill& fill, const detail::
 // Plans the hole's triangulation (or takes `plan`), steers it clear of the mesh when asked, and
 // adds it. False, with fill.failure saying why, when no triangulation could be added.
 bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options,
-                       const PlannedTriangulation* plan, const detail::FaceGrid* index) {
+                       const PlannedTriangulation* plan, const detail::MeshFaceIndex* index) {
   PlannedTriangulation planned;
   fill.times.triangulate_seconds +=
       timed([&] { planned = plan ? *plan : plan_triangulation(mesh, hole, options.triangulate); });
@@ -94,7 +93,7 @@ bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillO
 // Refines the patch; a refinement with remeshing that must be undone is tried again without the
 // remeshing, and one that still fails is undone (the patch stays as triangulated).
 void refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
-                  const detail::FaceGrid* index) {
+                  const detail::MeshFaceIndex* index) {
   const detail::StageUndo undo(mesh, fill.patch);
   std::size_t intersections = 0;
   fill.times.refine_seconds = 0.0;
@@ -140,7 +139,7 @@ void refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
 
 // Smooths the patch; a smoothing that must be undone puts the new vertices back where they were.
 void smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
-                  const detail::FaceGrid* index) {
+                  const detail::MeshFaceIndex* index) {
   std::vector<Point> positions;
   for (const auto v : fill.patch.new_vertices) positions.push_back(mesh.point(v));
   std::string problem;
@@ -162,7 +161,7 @@ void smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
 // advance(), with the triangulation already planned when `plan` is given, and the faces outside
 // the patch indexed when `index` is.
 StageRun advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options,
-                      const PlannedTriangulation* plan, const detail::FaceGrid* index) {
+                      const PlannedTriangulation* plan, const detail::MeshFaceIndex* index) {
   fill.hole_id = hole.id;
   fill.boundary_edges = hole.size();
   if (fill.failed()) return StageRun::Failed;
@@ -189,7 +188,7 @@ StageRun advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOp
 }
 
 HoleFill fill_planned(Mesh& mesh, const Hole& hole, const FillOptions& options,
-                      const PlannedTriangulation* plan, const detail::FaceGrid* index) {
+                      const PlannedTriangulation* plan, const detail::MeshFaceIndex* index) {
   HoleFill fill;
   while (fill.stage() < options.last_stage &&
          advance_with(mesh, hole, fill, options, plan, index) == StageRun::Ran) {
@@ -270,7 +269,10 @@ std::vector<HoleFill> fill_groups(Mesh& mesh, const std::vector<Hole>& holes,
   if (cancelled()) return {};
 
   // Patches are checked against the faces near them; each finished patch joins those faces.
-  detail::FaceGrid index = detail::FaceGrid::of_mesh(mesh);
+  std::vector<detail::Box> regions;
+  for (const auto& plan : plans)
+    regions.push_back(detail::neighbourhood_of(mesh, plan.polygon.vertices));
+  detail::MeshFaceIndex index(mesh, regions);
   std::vector<HoleFill> fills;
   for (std::size_t i = 0; i < chosen.size() && !cancelled(); ++i) {
     HoleFill& fill = fills.emplace_back(fill_planned(

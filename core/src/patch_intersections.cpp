@@ -31,7 +31,7 @@ bool marked(const std::vector<bool>& in_patch, FaceHandle f) {
 
 std::vector<IntersectingPair> triangle_intersections(
     const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
-    const std::vector<bool>& in_patch, const FaceGrid* around) {
+    const std::vector<bool>& in_patch, const MeshFaceIndex* around) {
   if (triangles.empty()) return {};
   // Candidates: the patch's triangles first, then the mesh's faces near them.
   std::vector<std::array<Point, 3>> corners = triangles;
@@ -80,12 +80,12 @@ std::vector<IntersectingPair> triangle_intersections(
 
 std::vector<std::pair<int, int>> chords_through_mesh(const Mesh& mesh,
                                                      const std::vector<Point>& points,
-                                                     const FaceGrid* around) {
+                                                     const MeshFaceIndex* around) {
   const int n = static_cast<int>(points.size());
   Box reach;
   for (const auto& p : points) reach.add(p);
-  std::optional<FaceGrid> own;
-  if (!around) around = &own.emplace(FaceGrid::of_mesh(mesh));
+  std::optional<MeshFaceIndex> own;
+  if (!around) around = &own.emplace(mesh, std::vector<Box>{reach});
   std::vector<int> faces = around->near(reach);
   double magnitude = reach.magnitude();
   std::vector<std::pair<int, Box>> boxes;
@@ -125,7 +125,7 @@ std::vector<std::pair<int, int>> chords_through_mesh(const Mesh& mesh,
 }
 
 std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch& patch,
-                                                  const FaceGrid* around) {
+                                                  const MeshFaceIndex* around) {
   std::vector<bool> in_patch(mesh.n_faces(), false);
   std::vector<std::array<Point, 3>> triangles;
   for (const auto f : patch.faces) {

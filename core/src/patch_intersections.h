@@ -1,15 +1,15 @@
 // Which triangles of a patch intersect the mesh around them or each other (the test is
-// triangle_intersection.h's), found through one face grid (face_grid.h). A patch is given either
-// as faces of the mesh or as corner positions of triangles not (yet) in it, so that a planned
-// triangulation can be checked before it is added.
+// triangle_intersection.h's), found through face grids (face_grid.h, mesh_face_index.h). A patch is
+// given either as faces of the mesh or as corner positions of triangles not (yet) in it, so that a
+// planned triangulation can be checked before it is added.
 #pragma once
 
 #include <array>
 #include <vector>
 
-#include "face_grid.h"
 #include "holefill/mesh.h"
 #include "holefill/patch.h"
+#include "mesh_face_index.h"
 
 namespace holefill::detail {
 
@@ -30,17 +30,17 @@ struct IntersectingPair {
 // finite.
 std::vector<IntersectingPair> triangle_intersections(
     const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
-    const std::vector<bool>& in_patch, const FaceGrid* around);
+    const std::vector<bool>& in_patch, const MeshFaceIndex* around);
 
 // The chords (i, k), i < k, between non-neighbouring points of a hole's polygon whose segment
 // passes through the interior of a face of the mesh (any triangle with such a side intersects
 // it). `around` as for triangle_intersections.
 std::vector<std::pair<int, int>> chords_through_mesh(const Mesh& mesh,
                                                      const std::vector<Point>& points,
-                                                     const FaceGrid* around);
+                                                     const MeshFaceIndex* around);
 
 // triangle_intersections for a patch already in the mesh; `triangle` indexes patch.faces.
 std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch& patch,
-                                                  const FaceGrid* around);
+                                                  const MeshFaceIndex* around);
 
 }  // namespace holefill::detail

@@ -1,0 +1,56 @@
+// The faces of a mesh around the holes being filled, for the intersection checks
+// (patch_intersections.h): grids (face_grid.h) over the faces near given regions only, so that
+// checking the patches costs what their neighbourhoods hold. A grid over every face of the mesh
+// cost more than the checks it served (sorting a cell key per face: an eighth of filling four
+// small holes in a 1.4M-face mesh). A lookup outside every region so far files the faces near it
+// on demand, so every lookup finds what a scan of all the faces would.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "face_grid.h"
+#include "holefill/mesh.h"
+
+namespace holefill::detail {
+
+// The box of the loop's vertices grown on every side by its largest extent: where a patch across
+// the loop lies (refinement and umbrella smoothing stay inside the loop's box; fairing may bulge
+// out of it, and the index then files the faces near the bulge when it is looked up).
+Box neighbourhood_of(const Mesh& mesh, const std::vector<VertexHandle>& loop);
+
+class MeshFaceIndex {
+ public:
+  // Indexes the faces the mesh has now (those not deleted), filing at once, in one pass over the
+  // mesh, the faces near `regions`. The mesh must outlive the index, and the faces indexed must
+  // keep their indices and corners (filling only adds faces after them); faces added to the mesh
+  // later are found only once add() is told of them.
+  MeshFaceIndex(const Mesh& mesh, const std::vector<Box>& regions);
+
+  // An entry added after the index was made (a finished patch's face, id = its index): found by
+  // every lookup whose box it overlaps.
+  void add(int id, const Box& box) { added_.emplace_back(id, box); }
+
+  // The ids (face indices) of the indexed faces and added entries whose boxes overlap `box`,
+  // ascending, each once. A box that no region holds first files the faces near it (a pass over
+  // the mesh).
+  std::vector<int> near(const Box& box) const;
+
+ private:
+  // The faces near some regions, in one grid; `everywhere` when a region was not a finite box
+  // (then every face is filed, as a NaN box overlaps every box).
+  struct Part {
+    std::vector<Box> regions;
+    bool everywhere = false;
+    FaceGrid grid;
+  };
+  const Part& part_holding(const Box& box) const;
+  void file_faces_near(std::vector<Box> regions) const;
+
+  const Mesh& mesh_;
+  int indexed_faces_;                // the faces below this index (those not deleted) are indexed
+  mutable std::vector<Part> parts_;  // grown by lookups (the index is read by one thread)
+  std::vector<std::pair<int, Box>> added_;
+};
+
+}  // namespace holefill::detail

@@ -1,0 +1,98 @@
+// MeshFaceIndex files only the faces near the holes, and more on demand: every lookup must still
+// find exactly what a scan of all the faces (and the entries added since) finds.
+#include "mesh_face_index.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "face_grid.h"
+#include "test_meshes.h"
+
+namespace holefill::detail {
+namespace {
+
+struct Added {
+  int id;
+  Box box;
+};
+
+// The scan the index stands for: faces below `indexed` (not deleted) and added entries whose
+// boxes overlap `box`, ascending, each once.
+std::vector<int> scanned(const Mesh& mesh, int indexed, const std::vector<Added>& added,
+                         const Box& box) {
+  std::vector<int> ids;
+  for (const auto f : mesh.faces()) {
+    if (f.idx() < indexed && box_of(mesh, f).overlaps(box)) ids.push_back(f.idx());
+  }
+  for (const auto& a : added) {
+    if (a.box.overlaps(box)) ids.push_back(a.id);
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+Box box_around(const Point& centre, double half) {
+  Box box;
+  box.add(centre - Point(half, half, half));
+  box.add(centre + Point(half, half, half));
+  return box;
+}
+
+// A wavy 40 x 40 grid (3,200 faces over [0, 1]^2) and lookups of every size, inside the regions,
+// across their edges and far from them, before and after entries are added.
+TEST(MeshFaceIndex, FindsWhatAScanOfAllFacesFinds) {
+  Mesh mesh = testing::make_grid(40, [](double x, double y) { return 0.1 * std::sin(9 * x * y); });
+  mesh.delete_face(FaceHandle(5), false);  // a deleted face is not indexed
+  const int indexed = static_cast<int>(mesh.n_faces());
+  const std::vector<Box> regions{box_around({0.2, 0.2, 0.0}, 0.05),
+                                 box_around({0.7, 0.4, 0.0}, 0.1)};
+  MeshFaceIndex index(mesh, regions);
+  std::vector<Added> added;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coordinate(-0.2, 1.2), size(0.0, 0.3);
+  for (int round = 0; round < 300; ++round) {
+    if (round % 50 == 49) {  // a patch's face joins, as fill_holes adds them
+      const auto v = mesh.add_vertex({coordinate(rng), coordinate(rng), 0.5});
+      const auto w = mesh.add_vertex({coordinate(rng), coordinate(rng), 0.5});
+      const auto u = mesh.add_vertex({coordinate(rng), coordinate(rng), -0.5});
+      const FaceHandle f = mesh.add_face(v, w, u);
+      added.push_back({f.idx(), box_of(mesh, f)});
+      index.add(added.back().id, added.back().box);
+    }
+    const Box box = round % 3 == 0
+                        ? box_around(regions[round % 2].low + Point(0.03, 0.04, 0.0), size(rng) / 8)
+                        : box_around({coordinate(rng), coordinate(rng), 0.0}, size(rng));
+    ASSERT_EQ(index.near(box), scanned(mesh, indexed, added, box)) << "lookup " << round;
+  }
+  // A box with no extent, one covering everything, the empty box and a NaN one.
+  for (const Box& box : {box_around({0.5, 0.5, 0.0}, 0.0), box_around({0.5, 0.5, 0.0}, 1e6), Box{},
+                         box_around({NAN, 0.5, 0.0}, 0.1)}) {
+    EXPECT_EQ(index.near(box), scanned(mesh, indexed, added, box));
+  }
+}
+
+// Regions far apart make a coarse grid too fine to allocate; huge coordinates make one
+// impossible: the index then files more faces, never fewer.
+TEST(MeshFaceIndex, ExactWithFarApartRegionsAndHugeCoordinates) {
+  for (const double scale : {1.0, 1e300}) {
+    Mesh mesh = testing::make_grid(20, [](double x, double y) { return x * y; });
+    for (const auto v : mesh.vertices()) mesh.set_point(v, mesh.point(v) * scale);
+    std::vector<Box> regions;
+    for (int i = 0; i < 5; ++i) {
+      regions.push_back(box_around(Point(0.2 * i, 0.1 * i, 0.0) * scale, 1e-7 * scale));
+    }
+    regions.push_back(box_around(Point(1e6, 0.0, 0.0) * std::min(scale, 1.0), 1e-7));
+    const MeshFaceIndex index(mesh, regions);
+    for (const Box& box : {regions[2], box_around(Point(0.5, 0.5, 0.25) * scale, 0.2 * scale),
+                           box_around(Point(0.3, 0.6, 0.0) * scale, 0.01 * scale)}) {
+      EXPECT_EQ(index.near(box), scanned(mesh, static_cast<int>(mesh.n_faces()), {}, box));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace holefill::detail
