@@ -47,12 +47,16 @@ constexpr double kFoldedShareOfHeightField = 0.01;
 
 bool piece_is_height_field_over(const Mesh& mesh, const MeshPiece& piece,
                                 const Point& vector_area) {
+  // The sum only grows: once over the limit it stays over (most pieces are no height field,
+  // and summing all of a big one's faces took 6 % of filling a 1.4M-face mesh).
+  const double limit = kFoldedShareOfHeightField * piece.area;
   double folded = 0.0;
   for (const auto f : piece.faces) {
     const Point n = mesh.calc_face_normal(f);
     if (OpenMesh::dot(n, vector_area) >= 0.0) folded += mesh.calc_face_area(f);
+    if (folded > limit) return false;
   }
-  return folded <= kFoldedShareOfHeightField * piece.area;
+  return folded <= limit;
 }
 
 std::string percent(double share) {

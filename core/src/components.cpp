@@ -1,27 +1,58 @@
 #include "holefill/components.h"
 
 #include <algorithm>
+#include <array>
 
 namespace holefill {
+
+namespace {
+
+// Each face's neighbours across its edges (as ff_range lists them: from the face's halfedge on,
+// -1 across a boundary) and its area (calc_face_area's), read in face order: the loads of one face
+// do not wait on another's, where following the pieces face by face through OpenMesh's arrays
+// waited on each (mesh_pieces was 14 % of filling a 1.4M-face mesh).
+struct FaceLinks {
+  std::vector<std::array<int, 3>> neighbours;
+  std::vector<double> area;
+};
+
+FaceLinks face_links(const Mesh& mesh) {
+  FaceLinks links;
+  links.neighbours.assign(mesh.n_faces(), {-1, -1, -1});
+  links.area.assign(mesh.n_faces(), 0.0);
+  for (const auto f : mesh.faces()) {
+    const HalfedgeHandle first = mesh.halfedge_handle(f);
+    HalfedgeHandle h = first;
+    for (int side = 0; side < 3; ++side) {
+      links.neighbours[f.idx()][side] = mesh.face_handle(mesh.opposite_halfedge_handle(h)).idx();
+      h = mesh.next_halfedge_handle(h);
+    }
+    links.area[f.idx()] = mesh.calc_face_area(f);
+  }
+  return links;
+}
+
+}  // namespace
 
 MeshPieces mesh_pieces(const Mesh& mesh) {
   MeshPieces result;
   result.piece_of_face.assign(mesh.n_faces(), -1);
-  std::vector<FaceHandle> stack;
+  const FaceLinks links = face_links(mesh);
+  std::vector<int> stack;
   for (const auto start : mesh.faces()) {
     if (result.piece_of_face[start.idx()] >= 0) continue;
     const int id = static_cast<int>(result.pieces.size());
     MeshPiece piece;
     result.piece_of_face[start.idx()] = id;
-    stack.push_back(start);
+    stack.push_back(start.idx());
     while (!stack.empty()) {
-      const FaceHandle f = stack.back();
+      const int f = stack.back();
       stack.pop_back();
-      piece.faces.push_back(f);
-      piece.area += mesh.calc_face_area(f);
-      for (const auto neighbour : mesh.ff_range(f)) {
-        if (result.piece_of_face[neighbour.idx()] < 0) {
-          result.piece_of_face[neighbour.idx()] = id;
+      piece.faces.emplace_back(f);
+      piece.area += links.area[f];
+      for (const int neighbour : links.neighbours[f]) {
+        if (neighbour >= 0 && result.piece_of_face[neighbour] < 0) {
+          result.piece_of_face[neighbour] = id;
           stack.push_back(neighbour);
         }
       }

@@ -11,6 +11,7 @@
 #include <random>
 #include <set>
 
+#include "holefill/components.h"
 #include "test_meshes.h"
 
 namespace holefill {
@@ -120,6 +121,57 @@ TEST(Holes, TwoSquareHolesMeetingAtACornerArePinchedAndSeparateHolesAreNot) {
   // corner's fans are joined by no face), or two loops of 4 that touch: pinched either way.
   EXPECT_GE(by_pinch[true], 1);
   EXPECT_EQ(by_pinch[false], 1);  // cell (4, 1)
+}
+
+// mesh_pieces against a union-find over the edges: the same pieces (numbered by their lowest
+// face), each with its faces and its area, on a mesh of many pieces, some touching only at a
+// vertex (which does not join them), with a deleted face.
+TEST(Pieces, AreTheFacesJoinedThroughEdgesAsAUnionFindFindsThem) {
+  Mesh mesh = sphere_with_random_holes(11);
+  for (int copy = 0; copy < 3; ++copy) {  // three lone triangles, two touching at a vertex
+    const auto a = mesh.add_vertex({3.0 + copy, 0.0, 0.0});
+    const auto b = mesh.add_vertex({3.5 + copy, 0.0, 0.0});
+    mesh.add_face(a, b, mesh.add_vertex({3.0 + copy, 0.5, 0.0}));
+    if (copy == 1)
+      mesh.add_face(b, mesh.add_vertex({4.5, -1.0, 0.0}), mesh.add_vertex({4.0, -1.0, 0.0}));
+  }
+  mesh.delete_face(FaceHandle(7), false);
+  std::vector<int> parent(mesh.n_faces());
+  for (std::size_t f = 0; f < parent.size(); ++f) parent[f] = static_cast<int>(f);
+  auto root = [&parent](int f) {
+    while (parent[f] != f) f = parent[f];
+    return f;
+  };
+  for (const auto e : mesh.edges()) {
+    const FaceHandle f0 = mesh.face_handle(mesh.halfedge_handle(e, 0));
+    const FaceHandle f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
+    if (f0.is_valid() && f1.is_valid()) parent[root(f0.idx())] = root(f1.idx());
+  }
+  std::map<int, std::set<int>> faces_of_root;
+  std::map<int, double> area_of_root;
+  for (const auto f : mesh.faces()) {
+    faces_of_root[root(f.idx())].insert(f.idx());
+    area_of_root[root(f.idx())] += mesh.calc_face_area(f);
+  }
+  std::vector<std::set<int>> expected;  // by lowest face
+  for (const auto& [r, faces] : faces_of_root) expected.push_back(faces);
+  std::sort(expected.begin(), expected.end());
+
+  const MeshPieces found = mesh_pieces(mesh);
+  ASSERT_EQ(found.pieces.size(), expected.size());
+  ASSERT_GE(expected.size(), 4u);
+  for (std::size_t p = 0; p < expected.size(); ++p) {
+    const MeshPiece& piece = found.pieces[p];
+    std::set<int> faces;
+    for (const auto f : piece.faces) {
+      faces.insert(f.idx());
+      EXPECT_EQ(found.piece_of_face[f.idx()], static_cast<int>(p));
+    }
+    EXPECT_EQ(faces, expected[p]) << "piece " << p;
+    EXPECT_EQ(piece.faces.size(), expected[p].size());  // each face once
+    EXPECT_NEAR(piece.area, area_of_root[root(*expected[p].begin())], 1e-12);
+  }
+  EXPECT_EQ(found.piece_of_face[7], -1);
 }
 
 }  // namespace
