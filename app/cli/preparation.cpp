@@ -14,8 +14,13 @@ void tell_stitching(const StitchReport& report, const std::string& path, std::os
   if (report.edges_stitched > 0) {
     out << "holefill: " << path << ": stitched " << report.edges_stitched << " boundary edges in "
         << report.seams << (report.seams == 1 ? " seam (" : " seams (") << report.vertices_merged
-        << " vertices merged, at most " << format("%.3g", report.largest_distance)
-        << " apart; tolerance " << format("%.3g", report.tolerance) << ")\n";
+        << " vertices merged, ";
+    if (report.t_junctions > 0) {
+      out << report.t_junctions
+          << " T-junctions split (a vertex of one side inside an edge of the other), ";
+    }
+    out << "at most " << format("%.3g", report.largest_distance) << " apart; tolerance "
+        << format("%.3g", report.tolerance) << ")\n";
   }
   if (report.edges_left_apart > 0) {
     out << "holefill: " << path << ": " << report.edges_left_apart

@@ -75,7 +75,8 @@ void add_preparation(const PreparedMesh& p, Json& document) {
                           {"seams", p.stitch.seams},
                           {"vertices_merged", p.stitch.vertices_merged},
                           {"largest_distance", p.stitch.largest_distance},
-                          {"edges_left_apart", p.stitch.edges_left_apart}};
+                          {"edges_left_apart", p.stitch.edges_left_apart},
+                          {"t_junctions", p.stitch.t_junctions}};
   } else {
     document["stitch"] = nullptr;
   }

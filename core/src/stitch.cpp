@@ -4,34 +4,19 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <nanoflann.hpp>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
+#include "boundary_points.h"
+#include "t_junctions.h"
 #include "vertex_link.h"
 
 namespace holefill {
 namespace {
 
-// The boundary vertices' positions as nanoflann's dataset adaptor wants them.
-struct BoundaryPoints {
-  const Mesh& mesh;
-  std::vector<VertexHandle> vertices;
-
-  std::size_t kdtree_get_point_count() const { return vertices.size(); }
-  double kdtree_get_pt(std::size_t i, std::size_t axis) const {
-    return mesh.point(vertices[i])[static_cast<int>(axis)];
-  }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
-};
-
-using PointTree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, BoundaryPoints>,
-                                        BoundaryPoints, 3, std::size_t>;
+using detail::BoundaryPoints;
 
 double default_tolerance(const Mesh& mesh) {
   Point low(INFINITY, INFINITY, INFINITY), high(-INFINITY, -INFINITY, -INFINITY);
@@ -45,16 +30,13 @@ double default_tolerance(const Mesh& mesh) {
 // For each point, the points within `tolerance` of it (itself included).
 std::vector<std::vector<VertexHandle>> vertices_within(const BoundaryPoints& points,
                                                        double tolerance) {
-  PointTree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  detail::BoundaryPointTree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   tree.buildIndex();
-  // nanoflann keeps points strictly inside the (squared) radius: widen it, then filter exactly.
-  const double search_radius = std::nextafter(tolerance * tolerance, INFINITY);
   std::vector<std::vector<VertexHandle>> near(points.vertices.size());
   std::vector<std::pair<std::size_t, double>> found;
   for (std::size_t s = 0; s < points.vertices.size(); ++s) {
     const Point& at = points.mesh.point(points.vertices[s]);
-    found.clear();
-    tree.radiusSearch(at.data(), search_radius, found, nanoflann::SearchParams(32, 0.0f, false));
+    detail::points_near(tree, at, tolerance, found);
     for (const auto& [index, squared] : found) {
       const VertexHandle v = points.vertices[index];
       if ((points.mesh.point(v) - at).norm() <= tolerance) near[s].push_back(v);
@@ -72,13 +54,10 @@ struct Matches {
 };
 
 Matches matching_boundary_edges(const Mesh& mesh, double tolerance) {
-  BoundaryPoints points{mesh, {}};
+  const BoundaryPoints points = detail::boundary_points(mesh);
   std::vector<int> slot(mesh.n_vertices(), -1);
-  for (const auto h : mesh.halfedges()) {
-    const VertexHandle to = mesh.to_vertex_handle(h);
-    if (!mesh.is_boundary(h) || slot[to.idx()] >= 0) continue;
-    slot[to.idx()] = static_cast<int>(points.vertices.size());
-    points.vertices.push_back(to);
+  for (std::size_t s = 0; s < points.vertices.size(); ++s) {
+    slot[points.vertices[s].idx()] = static_cast<int>(s);
   }
   Matches matches;
   if (points.vertices.empty()) return matches;
@@ -211,11 +190,11 @@ bool merge_vertices(Mesh& mesh, const std::vector<int>& kept_of) {
   return true;
 }
 
-}  // namespace
-
-StitchReport stitch_borders(Mesh& mesh, const StitchOptions& options) {
+// Stitches the boundary edges that lie on each other end to end (stitch_borders without the
+// T-junctions).
+StitchReport stitch_matching_edges(Mesh& mesh, double tolerance) {
   StitchReport report;
-  report.tolerance = options.tolerance >= 0.0 ? options.tolerance : default_tolerance(mesh);
+  report.tolerance = tolerance;
   const Matches matches = matching_boundary_edges(mesh, report.tolerance);
   std::vector<std::pair<HalfedgeHandle, HalfedgeHandle>> pairs = matches.pairs;
 
@@ -278,6 +257,53 @@ StitchReport stitch_borders(Mesh& mesh, const StitchOptions& options) {
   }
   report.edges_stitched = pairs.size();
   return report;
+}
+
+// Splits the edges at `junctions` on a copy of the mesh and stitches the copy. When every new
+// vertex was merged into its junction's vertex, the copy replaces the mesh and the report is
+// returned; otherwise the mesh is left as it was and the junctions whose vertices were left
+// over are removed from the list.
+std::optional<StitchReport> stitch_with_junctions(Mesh& mesh, double tolerance,
+                                                  std::vector<detail::TJunction>& junctions) {
+  Mesh trial = mesh;
+  OpenMesh::VPropHandleT<int> junction_of;  // 1 + the junction a new vertex stands for
+  trial.add_property(junction_of);
+  const std::vector<VertexHandle> added = detail::split_at_t_junctions(trial, junctions);
+  for (std::size_t j = 0; j < added.size(); ++j) {
+    trial.property(junction_of, added[j]) = static_cast<int>(j) + 1;
+  }
+  StitchReport report = stitch_matching_edges(trial, tolerance);
+  std::vector<char> left_over(junctions.size(), 0);
+  bool any_left_over = false;
+  for (const auto v : trial.vertices()) {
+    const int junction = trial.property(junction_of, v);
+    if (junction > 0) left_over[junction - 1] = 1, any_left_over = true;
+  }
+  if (any_left_over) {
+    std::size_t j = 0;
+    std::erase_if(junctions, [&](const detail::TJunction&) { return left_over[j++] != 0; });
+    return std::nullopt;
+  }
+  trial.remove_property(junction_of);
+  mesh = std::move(trial);
+  report.t_junctions = junctions.size();
+  report.vertices_merged -= junctions.size();  // the new vertices were never the file's
+  return report;
+}
+
+}  // namespace
+
+StitchReport stitch_borders(Mesh& mesh, const StitchOptions& options) {
+  const double tolerance = options.tolerance >= 0.0 ? options.tolerance : default_tolerance(mesh);
+  std::vector<detail::TJunction> junctions = detail::find_t_junctions(mesh, tolerance);
+  // A junction whose new vertex could not be merged (its stitch would not be clean) is dropped
+  // and the rest tried again; each try drops at least one, and the tries are bounded because
+  // each copies the mesh.
+  constexpr int kMaxTries = 3;
+  for (int attempt = 0; attempt < kMaxTries && !junctions.empty(); ++attempt) {
+    if (auto report = stitch_with_junctions(mesh, tolerance, junctions)) return *report;
+  }
+  return stitch_matching_edges(mesh, tolerance);
 }
 
 }  // namespace holefill

@@ -71,7 +71,9 @@ std::size_t cut_apart(Soup& soup, const std::function<bool(const Point&)>& side,
   return copy.size();
 }
 
-Soup box_of_separate_faces(int n) {
+Soup box_of_separate_faces(int n) { return box_of_separate_faces({n, n, n, n, n, n}); }
+
+Soup box_of_separate_faces(const std::array<int, 6>& points_per_side) {
   Soup box;
   // Each face: an origin corner and two axes, ordered so that the normal points outwards.
   const std::array<std::array<Point, 3>, 6> faces{{
@@ -82,7 +84,9 @@ Soup box_of_separate_faces(int n) {
       {Point(0, 0, 0), Point(0, 0, 1), Point(0, 1, 0)},  // x = 0
       {Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)},  // x = 1
   }};
-  for (const auto& [origin, u, v] : faces) {
+  for (std::size_t side = 0; side < faces.size(); ++side) {
+    const auto& [origin, u, v] = faces[side];
+    const int n = points_per_side[side];
     Soup grid;
     for (int j = 0; j < n; ++j) {
       for (int i = 0; i < n; ++i) {

@@ -4,6 +4,7 @@
 // border classification must make of it.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <random>
 
@@ -36,6 +37,10 @@ std::size_t cut_apart(Soup& soup, const std::function<bool(const Point&)>& side,
 // An axis-aligned cube [0,1]^3 exported face by face: six n x n grids, each with its own points
 // (so every cube edge is a seam and every corner is three points at one place).
 Soup box_of_separate_faces(int n);
+// The same with sides of their own resolution (points per grid row, in the order z = 0, z = 1,
+// y = 0, y = 1, x = 0, x = 1): where two sides of different resolutions meet, one side's points
+// lie inside the other's edges (T-junctions), as when a CAD part's faces are tessellated apart.
+Soup box_of_separate_faces(const std::array<int, 6>& points_per_side);
 
 // The centroid of a soup face.
 Point face_centroid(const Soup& soup, const std::vector<int>& face);

@@ -7,6 +7,7 @@
 
 #include "dirty_meshes.h"
 #include "holefill/holes.h"
+#include "holefill/obj_attributes.h"
 #include "test_meshes.h"
 
 namespace holefill::testing {
@@ -240,6 +241,163 @@ TEST_F(Stitch, FaceAndHalfedgePropertiesTravelWithTheirFaces) {
     const Point& p = mesh.point(v);
     EXPECT_EQ(mesh.property(vertex_id, v), 1000 + kept_id.at({p[0], p[1], p[2]}));
   }
+}
+
+// The positions where only one side of a box of separate sides has a point on a box edge (not at
+// a corner): the T-junctions, found by brute force over the soup.
+std::size_t lone_points_on_box_edges(const Soup& box, const std::array<int, 6>& points_per_side) {
+  auto on_box_edge = [](const Point& p) {
+    int at_face = 0;
+    for (int axis = 0; axis < 3; ++axis) at_face += p[axis] == 0.0 || p[axis] == 1.0;
+    return at_face == 2;
+  };
+  std::size_t lone = 0, first = 0;
+  for (std::size_t side = 0; side < 6; ++side) {
+    const std::size_t count = std::size_t(points_per_side[side]) * points_per_side[side];
+    for (std::size_t i = first; i < first + count; ++i) {
+      if (!on_box_edge(box.points[i])) continue;
+      std::size_t sides_there = 0;
+      for (const Point& q : box.points) sides_there += (q - box.points[i]).norm() < 1e-12;
+      lone += sides_there == 1;
+    }
+    first += count;
+  }
+  return lone;
+}
+
+double total_area(const Mesh& mesh) {
+  double area = 0.0;
+  for (const auto f : mesh.faces()) area += mesh.calc_face_area(f);
+  return area;
+}
+
+TEST_F(Stitch, ABoxWhoseSidesWereTessellatedApartClosesAtItsTJunctions) {
+  // Sides of 2 to 6 points a row: where 3 meets 4, 4 meets 5, ... the points interleave, so each
+  // side's edges hold the other's points (a zipper); where 2 meets 3, only one side has any.
+  for (const std::array<int, 6>& sides :
+       {std::array<int, 6>{3, 4, 5, 2, 6, 3}, std::array<int, 6>{2, 2, 5, 5, 3, 4}}) {
+    const Soup box = box_of_separate_faces(sides);
+    Mesh mesh = load(box);
+    const StitchReport report = stitch_borders(mesh);
+    EXPECT_EQ(report.t_junctions, lone_points_on_box_edges(box, sides));
+    EXPECT_GT(report.t_junctions, 0u);
+    EXPECT_TRUE(find_holes(mesh).empty());
+    EXPECT_TRUE(is_oriented_manifold(mesh));
+    EXPECT_EQ(int(mesh.n_vertices()) - int(mesh.n_edges()) + int(mesh.n_faces()), 2);
+    EXPECT_NEAR(total_area(mesh), 6.0, 1e-12);  // nothing folded over, nothing missing
+    for (const auto f : mesh.faces()) EXPECT_GT(mesh.calc_face_area(f), 1e-3);
+    // One vertex per distinct position of the soup, and none added.
+    std::size_t distinct = 0;
+    for (std::size_t i = 0; i < box.points.size(); ++i) {
+      bool seen = false;
+      for (std::size_t j = 0; j < i && !seen; ++j)
+        seen = (box.points[j] - box.points[i]).norm() < 1e-12;
+      distinct += !seen;
+    }
+    EXPECT_EQ(mesh.n_vertices(), distinct);
+    EXPECT_EQ(report.vertices_merged, box.points.size() - distinct);
+    EXPECT_EQ(mesh.n_faces(), box.faces.size() + report.t_junctions);
+  }
+}
+
+// Two unit squares side by side; the left one has a vertex halfway up the edge they share
+// (vertex 3 of the OBJ), the right one has none there. Texture coordinates per corner.
+constexpr const char* kTJunctionObj =
+    "v 0 0 0\nv 1 0 0\nv 1 0.5 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\n"
+    "vt 0 0\nvt 0.5 0\nvt 0.5 0.5\nvt 0.5 1\nvt 0 1\nvt 1 0\nvt 1 1\nvt 0.9 0.2\nvt 0.9 0.6\n"
+    "usemtl left\nf 1/1 2/2 3/3\nf 1/1 3/3 5/5\nf 3/3 4/4 5/5\n"
+    "usemtl right\nf 2/8 6/6 7/7\nf 2/8 7/7 4/9\n";
+
+TEST_F(Stitch, ATJunctionSplitKeepsTheFaceAndInterpolatesItsCorners) {
+  Mesh mesh = load_mesh(write("t.obj", kTJunctionObj));
+  const Mesh before = mesh;
+  const StitchReport report = stitch_borders(mesh);
+  EXPECT_EQ(report.t_junctions, 1u);
+  EXPECT_EQ(report.edges_stitched, 2u);
+  EXPECT_EQ(report.vertices_merged, 0u);
+  ASSERT_EQ(find_holes(mesh).size(), 1u);  // only the outer border is left
+  ASSERT_EQ(mesh.n_vertices(), 7u);
+  ASSERT_EQ(mesh.n_faces(), 6u);
+  const ObjHandles obj = obj_handles(mesh);
+  const ObjTables& tables = mesh.property(obj.tables);
+  // The faces of the left square and their corners are as they were.
+  for (int f = 0; f < 3; ++f) {
+    for (const auto h : mesh.fh_range(FaceHandle(f))) {
+      const auto old =
+          before.find_halfedge(before.from_vertex_handle(h), before.to_vertex_handle(h));
+      EXPECT_EQ(mesh.property(obj.texcoord, h), before.property(obj.texcoord, old));
+    }
+  }
+  // The right square's faces now meet vertex 3 (index 2): both halves keep the material, and their
+  // corner there lies halfway between the split face's corners at (1,0) and (1,1): vt 8 and vt 9.
+  int corners_at_junction = 0;
+  for (const auto f : mesh.faces()) {
+    if (f.idx() < 3) continue;
+    EXPECT_EQ(tables.materials[mesh.property(obj.material, f) - 1], "right");
+    for (const auto h : mesh.fh_range(f)) {
+      if (mesh.to_vertex_handle(h).idx() != 2) continue;
+      ++corners_at_junction;
+      const auto& uv = tables.texcoords[mesh.property(obj.texcoord, h) - 1];
+      EXPECT_NEAR(uv[0], 0.9, 1e-15);
+      EXPECT_NEAR(uv[1], 0.4, 1e-15);
+    }
+  }
+  EXPECT_EQ(corners_at_junction, 2);
+  EXPECT_NEAR(total_area(mesh), 2.0, 1e-15);
+}
+
+TEST_F(Stitch, AVertexOnAnEdgeWhoseBorderDoesNotRunBackAlongItIsNoTJunction) {
+  // A triangle whose tip touches the middle of a square's boundary edge from outside (a fin
+  // leaning on it, its border leaving the edge at once): nothing to stitch, nothing split.
+  const Soup soup{
+      {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 0.5, 0}, {2, 0, 0.5}, {2, 1, 0.5}},
+      {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}}};
+  Mesh mesh = load(soup);
+  const Mesh before = mesh;
+  const StitchReport report = stitch_borders(mesh);
+  EXPECT_EQ(report.t_junctions, 0u);
+  EXPECT_EQ(mesh.n_faces(), 3u);
+  EXPECT_TRUE(same_bits(face_corners(mesh), face_corners(before)));
+}
+
+// Strips along the x axis from 0 to 2 with a vertex at x = 1, their border running from 0 to 2,
+// each turned about the axis by its own angle (degrees): the fine side of a crack.
+Soup fins_along_x_axis(std::initializer_list<double> angles) {
+  Soup fins;
+  for (const double degrees : angles) {
+    const double a = degrees * M_PI / 180.0;
+    const Point out(0, std::cos(a), std::sin(a));
+    Soup fin{{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, Point(1, 0, 0) + out}, {{0, 3, 1}, {1, 3, 2}}};
+    fins = append(std::move(fins), fin);
+  }
+  return fins;
+}
+
+TEST_F(Stitch, AnEdgeThatAlreadyHasAPartnerIsNotSplitForAThirdSheet) {
+  // Two triangles share the long edge from (0,0,0) to (2,0,0) end to end; a fin standing on that
+  // edge has a vertex in its middle. The triangles are stitched to each other, the fin left apart.
+  const Soup triangles{{{0, 0, 0}, {2, 0, 0}, {1, 1, 0}, {0, 0, 0}, {2, 0, 0}, {1, -1, 0}},
+                       {{0, 1, 2}, {3, 5, 4}}};
+  Mesh mesh = load(append(triangles, fins_along_x_axis({-90})));
+  const StitchReport report = stitch_borders(mesh);
+  EXPECT_EQ(report.t_junctions, 0u);
+  EXPECT_EQ(report.edges_stitched, 1u);
+  EXPECT_EQ(mesh.n_faces(), 4u);
+}
+
+TEST_F(Stitch, AnEdgeWithTwoSheetsVerticesAtOnePointIsLeftWhole) {
+  // One triangle's border runs from (2,0,0) to (0,0,0); two fins, above and below, each have a
+  // vertex at (1,0,0) with their borders running back along it. Splitting the edge there would
+  // have to choose between them: the split is tried, the stitch refuses it, and the mesh stays
+  // as it was.
+  const Soup triangle{{{0, 0, 0}, {2, 0, 0}, {1, 1, 0}}, {{0, 1, 2}}};
+  Mesh mesh = load(append(triangle, fins_along_x_axis({90, -90})));
+  const Mesh before = mesh;
+  const StitchReport report = stitch_borders(mesh);
+  EXPECT_EQ(report.t_junctions, 0u);
+  EXPECT_EQ(report.edges_stitched, 0u);
+  EXPECT_TRUE(same_bits(face_corners(mesh), face_corners(before)));
+  EXPECT_EQ(mesh.n_vertices(), before.n_vertices());
 }
 
 TEST_F(Stitch, RandomCutsOfRandomSurfacesAreAllZippedBackExactly) {

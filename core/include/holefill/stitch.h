@@ -1,7 +1,9 @@
 // Stitching unwelded seams and zero-width cracks before holes are found (like CGAL's
 // stitch_borders): two boundary edges that lie on each other, end to end and in opposite
 // directions, become one edge. Pieces exported separately, STL soups and cut-open scans thus
-// close where they touch, and only real holes remain for the paper's pipeline.
+// close where they touch, and only real holes remain for the paper's pipeline. Where one side of
+// a crack has vertices the other lacks (T-junctions: CAD faces tessellated one by one), the
+// other side's edges are first split at those vertices, so that the two sides match.
 #pragma once
 
 #include <cstddef>
@@ -30,6 +32,9 @@ struct StitchReport {
   // Boundary edges lying on another boundary edge but left apart: more than two lie there, or
   // joining them would make a vertex or an edge non-manifold, or turn a face over.
   std::size_t edges_left_apart = 0;
+  // Vertices of one side of a crack that lay inside an edge of the other side: that edge was
+  // split there (its face in two, both keeping the face's properties) and then stitched.
+  std::size_t t_junctions = 0;
 };
 
 // Stitches every pair of boundary edges (a->b, b'->a') whose ends lie within the tolerance of
@@ -37,8 +42,11 @@ struct StitchReport {
 // vertices the one with the lowest index is kept, with its position and properties; the faces of
 // the others are put back on it with all their face and halfedge properties. No vertex that is
 // not merged moves, every face keeps its index, and vertices keep their indices except that the
-// last ones move into the places of the merged ones (OpenMesh's garbage collection). A mesh
-// with nothing to stitch is left untouched. Expects a mesh without deleted elements.
+// last ones move into the places of the merged ones (OpenMesh's garbage collection). A
+// T-junction's split adds one face after the others (the split face keeps its index); the
+// corners at the junction get OBJ texture coordinates and normals interpolated along the edge.
+// Splits whose stitch would not be clean are not made. A mesh with nothing to stitch is left
+// untouched. Expects a mesh without deleted elements.
 StitchReport stitch_borders(Mesh& mesh, const StitchOptions& options = {});
 
 }  // namespace holefill

@@ -1,0 +1,201 @@
+#include "t_junctions.h"
+
+#include <algorithm>
+#include <array>
+#include <tuple>
+
+#include "boundary_points.h"
+#include "holefill/obj_attributes.h"
+
+namespace holefill::detail {
+namespace {
+
+// Where p projects onto the line a->b (0 at a, 1 at b) and how far it lies from that line.
+struct Projection {
+  double along = 0.0;
+  double distance = INFINITY;
+};
+Projection project(const Point& p, const Point& a, const Point& b) {
+  const Point ab = b - a;
+  const double length2 = ab.sqrnorm();
+  if (!(length2 > 0.0)) return {};
+  const double along = OpenMesh::dot(p - a, ab) / length2;
+  return {along, (p - (a + ab * along)).norm()};
+}
+
+// Whether v's own boundary runs back along a->b: a boundary neighbour of v lies on the line
+// through a and b, before v (towards a) if v's boundary leaves v for it, after v if it comes from
+// there. The two sides of a crack run in opposite directions, so this is what a crack looks like.
+bool runs_back_along(const Mesh& mesh, VertexHandle v, double along_v, const Point& a,
+                     const Point& b, double tolerance) {
+  for (const auto out : mesh.voh_range(v)) {
+    if (mesh.is_boundary(out)) {  // v -> next on v's loop
+      const Projection next = project(mesh.point(mesh.to_vertex_handle(out)), a, b);
+      if (next.distance <= tolerance && next.along < along_v) return true;
+    }
+    const HalfedgeHandle in = mesh.opposite_halfedge_handle(out);
+    if (mesh.is_boundary(in)) {  // previous on v's loop -> v
+      const Projection previous = project(mesh.point(mesh.from_vertex_handle(in)), a, b);
+      if (previous.distance <= tolerance && previous.along > along_v) return true;
+    }
+  }
+  return false;
+}
+
+// The OBJ corner values (texture coordinate and normal numbers) of a face corner.
+struct CornerValues {
+  int texcoord = 0, normal = 0;
+};
+
+// Appends the value a fraction `along` of the way from number `from` to number `to` to `table`
+// and returns its number; 0 (none) when either end has none, the same number when both share it.
+template <class Value, class Mix>
+int interpolated(std::vector<Value>& table, int from, int to, double along, Mix&& mix) {
+  if (from <= 0 || to <= 0) return 0;
+  if (from == to) return from;
+  table.push_back(mix(table[from - 1], table[to - 1], along));
+  return static_cast<int>(table.size());
+}
+
+// Gives every corner of the faces around `fresh` (the new vertices on edge a->b, where `along`
+// says) its OBJ values: those of the split face's corner at the same vertex, interpolated along
+// the edge at the new vertices.
+void set_split_corners(Mesh& mesh, const ObjHandles& obj, VertexHandle a, VertexHandle b,
+                       const std::vector<std::pair<VertexHandle, double>>& fresh,
+                       const std::vector<std::pair<VertexHandle, CornerValues>>& old_corners) {
+  ObjTables& tables = mesh.property(obj.tables);
+  CornerValues at_a, at_b;
+  for (const auto& [vertex, values] : old_corners) {
+    if (vertex == a) at_a = values;
+    if (vertex == b) at_b = values;
+  }
+  std::vector<std::pair<VertexHandle, CornerValues>> corners = old_corners;
+  for (const auto& [vertex, along] : fresh) {
+    CornerValues values;
+    values.texcoord = interpolated(tables.texcoords, at_a.texcoord, at_b.texcoord, along,
+                                   [](const auto& p, const auto& q, double t) {
+                                     return std::array<double, 3>{p[0] + t * (q[0] - p[0]),
+                                                                  p[1] + t * (q[1] - p[1]),
+                                                                  p[2] + t * (q[2] - p[2])};
+                                   });
+    values.normal = interpolated(tables.normals, at_a.normal, at_b.normal, along,
+                                 [](const Point& p, const Point& q, double t) {
+                                   const Point mixed = p + (q - p) * t;
+                                   const double length = mixed.norm();
+                                   return length > 0.0 ? mixed / length : mixed;
+                                 });
+    corners.emplace_back(vertex, values);
+  }
+  for (const auto& [vertex, along] : fresh) {
+    for (const auto h : mesh.vih_range(vertex)) {
+      if (mesh.is_boundary(h)) continue;
+      for (const auto corner : mesh.fh_range(mesh.face_handle(h))) {
+        for (const auto& [at, values] : corners) {
+          if (at != mesh.to_vertex_handle(corner)) continue;
+          mesh.property(obj.texcoord, corner) = values.texcoord;
+          mesh.property(obj.normal, corner) = values.normal;
+        }
+      }
+    }
+  }
+}
+
+// Whether boundary halfedge a->b already has a partner end to end (a boundary halfedge from a
+// vertex within `tolerance` of b to one within `tolerance` of a): then the stitch joins those two,
+// and a third sheet's vertex on it is not the other side of a crack.
+bool has_partner(const Mesh& mesh, const BoundaryPoints& points, const BoundaryPointTree& tree,
+                 HalfedgeHandle h, double tolerance,
+                 std::vector<std::pair<std::size_t, double>>& found) {
+  const Point &a = mesh.point(mesh.from_vertex_handle(h)),
+              &b = mesh.point(mesh.to_vertex_handle(h));
+  points_near(tree, b, tolerance, found);
+  for (const auto& [index, squared] : found) {
+    const VertexHandle near_b = points.vertices[index];
+    if ((mesh.point(near_b) - b).norm() > tolerance) continue;
+    for (const auto out : mesh.voh_range(near_b)) {
+      if (out != h && mesh.is_boundary(out) &&
+          (mesh.point(mesh.to_vertex_handle(out)) - a).norm() <= tolerance) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<TJunction> find_t_junctions(const Mesh& mesh, double tolerance) {
+  const BoundaryPoints points = boundary_points(mesh);
+  std::vector<TJunction> junctions;
+  if (points.vertices.empty()) return junctions;
+  BoundaryPointTree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  std::vector<std::pair<std::size_t, double>> found;
+  for (const auto h : mesh.halfedges()) {
+    if (!mesh.is_boundary(h)) continue;
+    const VertexHandle from = mesh.from_vertex_handle(h), to = mesh.to_vertex_handle(h);
+    const Point &a = mesh.point(from), &b = mesh.point(to);
+    const double length = (b - a).norm();
+    if (!(length > 2.0 * tolerance) || !(length < INFINITY)) continue;
+    points_near(tree, (a + b) * 0.5, 0.5 * length + tolerance, found);
+    const std::size_t first = junctions.size();
+    for (const auto& [index, squared] : found) {
+      const VertexHandle v = points.vertices[index];
+      const Point& p = mesh.point(v);
+      if (v == from || v == to || (p - a).norm() <= tolerance || (p - b).norm() <= tolerance) {
+        continue;
+      }
+      const Projection onto = project(p, a, b);
+      if (onto.distance > tolerance || !(onto.along > 0.0 && onto.along < 1.0)) continue;
+      if (runs_back_along(mesh, v, onto.along, a, b, tolerance)) {
+        junctions.push_back({h, v, onto.along});
+      }
+    }
+    if (junctions.size() > first && has_partner(mesh, points, tree, h, tolerance, found)) {
+      junctions.resize(first);
+    }
+    std::sort(junctions.begin() + static_cast<std::ptrdiff_t>(first), junctions.end(),
+              [](const TJunction& x, const TJunction& y) {
+                return std::tie(x.along, x.vertex) < std::tie(y.along, y.vertex);
+              });
+  }
+  return junctions;
+}
+
+std::vector<VertexHandle> split_at_t_junctions(Mesh& mesh,
+                                               const std::vector<TJunction>& junctions) {
+  const ObjHandles obj = obj_handles(mesh);
+  std::vector<VertexHandle> added;
+  for (std::size_t first = 0; first < junctions.size();) {
+    std::size_t last = first;
+    while (last < junctions.size() && junctions[last].edge == junctions[first].edge) ++last;
+    const HalfedgeHandle edge = junctions[first].edge;
+    const VertexHandle a = mesh.from_vertex_handle(edge), b = mesh.to_vertex_handle(edge);
+    // The face beside the boundary edge, before it is split: its corners' OBJ values.
+    std::vector<std::pair<VertexHandle, CornerValues>> old_corners;
+    if (obj.valid()) {
+      const FaceHandle face = mesh.face_handle(mesh.opposite_halfedge_handle(edge));
+      for (const auto corner : mesh.fh_range(face)) {
+        old_corners.push_back(
+            {mesh.to_vertex_handle(corner),
+             {mesh.property(obj.texcoord, corner), mesh.property(obj.normal, corner)}});
+      }
+    }
+    std::vector<std::pair<VertexHandle, double>> fresh;
+    VertexHandle start = a;  // the junctions come in order from a to b
+    for (std::size_t j = first; j < last; ++j) {
+      // A copy: add_vertex may move the points the reference would point into.
+      const Point at = mesh.point(junctions[j].vertex);
+      const VertexHandle vertex = mesh.add_vertex(at);
+      mesh.split_copy(mesh.edge_handle(mesh.find_halfedge(start, b)), vertex);
+      fresh.emplace_back(vertex, junctions[j].along);
+      added.push_back(vertex);
+      start = vertex;
+    }
+    if (obj.valid()) set_split_corners(mesh, obj, a, b, fresh, old_corners);
+    first = last;
+  }
+  return added;
+}
+
+}  // namespace holefill::detail
