@@ -155,6 +155,24 @@ TEST(IoMeshBuilding, LoadedAssetsMatchTheMeshAddFaceBuilds) {
   }
 }
 
+// Filling adds a patch to a loaded mesh without moving its arrays: growing each into a copy twice
+// its size held both copies of the largest at the peak of filling a big mesh.
+TEST(IoMeshBuilding, ALoadedMeshHasRoomForAPatch) {
+  Mesh mesh = load_mesh(fs::path(HOLEFILL_ASSETS_DIR) / "bunny.obj");
+  const Hole hole = find_holes(mesh).front();
+  const Point* points = mesh.points();
+  const auto* edge_status = &mesh.status(EdgeHandle(0));
+  const auto* face_status = &mesh.status(FaceHandle(0));
+  const VertexHandle centre = mesh.add_vertex(hole.centroid);  // a fan across the largest hole
+  for (std::size_t i = 0; i < hole.size(); ++i) {
+    ASSERT_TRUE(
+        mesh.add_face(hole.vertices[i], hole.vertices[(i + 1) % hole.size()], centre).is_valid());
+  }
+  EXPECT_EQ(mesh.points(), points);
+  EXPECT_EQ(&mesh.status(EdgeHandle(0)), edge_status);
+  EXPECT_EQ(&mesh.status(FaceHandle(0)), face_status);
+}
+
 // Many open fans around one vertex (a fan of separate triangles): one boundary loop passes the
 // hub once per fan, and the structure is consistent. This loaded in quadratic time before
 // (80,000 fans: 103 s); bench/io_bench.cpp measures it.

@@ -94,6 +94,28 @@ void check_start(const io::FileStart& start, const fs::path& path) {
   }
 }
 
+// The polygons `bytes` describe, read by the reader their contents and name choose (the report's
+// format set).
+io::Soup soup_of_bytes(const std::string& bytes, const fs::path& name, LoadReport& report) {
+  // OpenMesh prints why add_face refuses a face; we count those faces and say so instead.
+  omerr().disable();
+  if (bytes.empty()) io::fail(name, "is empty");
+  const io::Format format = choose_format(bytes, name, report);
+  report.format = io::name_of(format);
+  std::uint32_t triangles = 0;  // a binary STL's header may start with any bytes
+  const std::string_view text = io::binary_stl_size_matches(bytes, triangles)
+                                    ? std::string_view(bytes)
+                                    : io::without_byte_order_mark(bytes);
+  return read_soup(format, text, name, report);
+}
+
+Mesh mesh_of_soup(io::Soup soup, const fs::path& name, LoadReport& report) {
+  Mesh mesh = io::build_mesh(std::move(soup), report);
+  if (mesh.n_faces() == 0) throw InvalidMeshError(name, "contains no faces");
+  io::add_warnings(report);
+  return mesh;
+}
+
 bool has_deleted_elements(const Mesh& mesh) {
   const auto live_vertices =
       static_cast<std::size_t>(std::distance(mesh.vertices().begin(), mesh.vertices().end()));
@@ -118,25 +140,18 @@ Mesh load_mesh_from_memory(const std::string& bytes, const fs::path& name, LoadR
   LoadReport local;
   LoadReport& out = report ? *report : local;
   out = LoadReport{};
-  // OpenMesh prints why add_face refuses a face; we count those faces and say so instead.
-  omerr().disable();
-  if (bytes.empty()) io::fail(name, "is empty");
-  const io::Format format = choose_format(bytes, name, out);
-  out.format = io::name_of(format);
-  std::uint32_t triangles = 0;  // a binary STL's header may start with any bytes
-  const std::string_view text = io::binary_stl_size_matches(bytes, triangles)
-                                    ? std::string_view(bytes)
-                                    : io::without_byte_order_mark(bytes);
-  Mesh mesh = io::build_mesh(read_soup(format, text, name, out), out);
-  if (mesh.n_faces() == 0) throw InvalidMeshError(name, "contains no faces");
-  io::add_warnings(out);
-  return mesh;
+  return mesh_of_soup(soup_of_bytes(bytes, name, out), name, out);
 }
 
 Mesh load_mesh(const fs::path& path, LoadReport* report) {
   const io::FileStart start = io::read_file_start(path);
   if (start.size > start.bytes.size()) check_start(start, path);
-  return load_mesh_from_memory(io::read_file_bytes(path), path, report);
+  LoadReport local;
+  LoadReport& out = report ? *report : local;
+  out = LoadReport{};
+  // The file's bytes are freed before the mesh is built, so that they are not held at the peak.
+  io::Soup soup = soup_of_bytes(io::read_file_bytes(path), path, out);
+  return mesh_of_soup(std::move(soup), path, out);
 }
 
 std::string mesh_to_bytes(const Mesh& mesh, const fs::path& name) {

@@ -106,56 +106,77 @@ void link_boundaries(Mesh& mesh) {
   }
 }
 
+// The halfedges of the triangles' edges, numbered as OpenMesh numbers them when the edges are
+// made in the order of their uses: edge e is made from the corner edge_corner[e] (3 t + c: the
+// edge from corner c of triangle t to the next), whose halfedge is 2 e; the other triangle on the
+// edge gets 2 e + 1. Computed before the mesh exists, so that the uses (16 bytes each, three per
+// triangle) are freed before the mesh's arrays are made.
+struct HalfedgeNumbers {
+  std::vector<int> of_corner;    // per corner 3 t + c: the halfedge from corner c to c + 1
+  std::vector<int> edge_corner;  // per edge: the corner it is made from
+};
+
+HalfedgeNumbers halfedge_numbers(const std::vector<Triangle>& triangles,
+                                 std::vector<EdgeUse> known_uses) {
+  const std::vector<EdgeUse> uses =
+      known_uses.empty() ? edge_uses(triangles) : std::move(known_uses);
+  HalfedgeNumbers numbers;
+  numbers.of_corner.resize(3 * triangles.size());
+  numbers.edge_corner.reserve(uses.size());
+  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+    const int a = static_cast<int>(uses[i].edge >> 32);
+    const int b = static_cast<int>(uses[i].edge & 0xFFFFFFFFu);
+    const int t = uses[i].triangle;
+    const int corner = 3 * t + corner_of_edge(triangles[t], a, b);
+    const int halfedge = 2 * static_cast<int>(numbers.edge_corner.size());
+    numbers.edge_corner.push_back(corner);
+    numbers.of_corner[corner] = halfedge;
+    if (j - i == 2) {
+      const int other = uses[i + 1].triangle;
+      numbers.of_corner[3 * other + corner_of_edge(triangles[other], a, b)] = halfedge + 1;
+    }
+  });
+  return numbers;
+}
+
 // Adds the triangles' faces by building their half-edges directly: linear in the triangles,
 // where add_face circulates around each corner (quadratic around a vertex with many fans).
 // Preconditions (what the repairs guarantee): every edge is used at most twice, in opposite
 // directions, and a vertex has either one closed fan or only open ones.
 void add_triangles(Mesh& mesh, const std::vector<Triangle>& triangles,
-                   std::vector<EdgeUse> known_uses) {
-  std::vector<HalfedgeHandle> halfedge(3 * triangles.size());  // corner c to corner c + 1
-  const std::vector<EdgeUse> uses =
-      known_uses.empty() ? edge_uses(triangles) : std::move(known_uses);
-  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
-    const int a = static_cast<int>(uses[i].edge >> 32);
-    const int b = static_cast<int>(uses[i].edge & 0xFFFFFFFFu);
-    const int t = uses[i].triangle;
-    const int c = corner_of_edge(triangles[t], a, b);
-    const HalfedgeHandle h =
-        mesh.new_edge(VertexHandle(triangles[t][c]), VertexHandle(triangles[t][(c + 1) % 3]));
-    halfedge[3 * t + c] = h;
-    if (j - i == 2) {
-      const int other = uses[i + 1].triangle;
-      halfedge[3 * other + corner_of_edge(triangles[other], a, b)] =
-          mesh.opposite_halfedge_handle(h);
-    }
-  });
+                   const HalfedgeNumbers& numbers) {
+  for (const int corner : numbers.edge_corner) {
+    const Triangle& t = triangles[corner / 3];
+    const int c = corner % 3;
+    mesh.new_edge(VertexHandle(t[c]), VertexHandle(t[(c + 1) % 3]));
+  }
+  auto halfedge = [&numbers](std::size_t corner) {
+    return HalfedgeHandle(numbers.of_corner[corner]);
+  };
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     const FaceHandle f = mesh.new_face();
     // As add_face does: the face circulators start at corner 0.
-    mesh.set_halfedge_handle(f, halfedge[3 * t + 2]);
+    mesh.set_halfedge_handle(f, halfedge(3 * t + 2));
     for (int c = 0; c < 3; ++c) {
-      const HalfedgeHandle h = halfedge[3 * t + c];
+      const HalfedgeHandle h = halfedge(3 * t + c);
       mesh.set_face_handle(h, f);
-      mesh.set_next_halfedge_handle(h, halfedge[3 * t + (c + 1) % 3]);
+      mesh.set_next_halfedge_handle(h, halfedge(3 * t + (c + 1) % 3));
       mesh.set_halfedge_handle(mesh.from_vertex_handle(h), h);
     }
   }
   link_boundaries(mesh);
 }
 
-}  // namespace
+// Room for this many elements when there are `count`: an eighth more (see assemble).
+std::size_t with_room(std::size_t count) { return count + count / 8 + 64; }
 
-// Faces that could not join the surface (an edge with a third face, a face turned against its
-// neighbours) are kept, on their own copies of their corners, so no data is lost.
-Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& triangles,
-              const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
-              MeshSources& sources, std::vector<EdgeUse> uses) {
-  std::vector<Point> all_positions = positions;
-  sources.vertex.resize(positions.size());
-  for (std::size_t v = 0; v < positions.size(); ++v) sources.vertex[v] = static_cast<int>(v);
+// The triangles with those marked in `detached` last, each on its own copies of its corners
+// (appended to `positions`); says where the faces and the copies came from in `sources`.
+std::vector<Triangle> detach(const std::vector<Triangle>& triangles,
+                             const std::vector<char>& detached, std::vector<Point>& positions,
+                             MeshSources& sources, std::size_t& count) {
   std::vector<Triangle> kept, apart;
   std::vector<int> apart_source;
-  sources.face.clear();
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     if (!detached[t]) {
       kept.push_back(triangles[t]);
@@ -164,22 +185,48 @@ Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& 
     }
     Triangle copy;
     for (int c = 0; c < 3; ++c) {
-      copy[c] = static_cast<int>(all_positions.size());
-      all_positions.push_back(positions[triangles[t][c]]);
+      copy[c] = static_cast<int>(positions.size());
+      const Point corner = positions[triangles[t][c]];
+      positions.push_back(corner);
       sources.vertex.push_back(triangles[t][c]);
     }
     apart.push_back(copy);
     apart_source.push_back(static_cast<int>(t));
   }
   sources.face.insert(sources.face.end(), apart_source.begin(), apart_source.end());
-  report.faces_detached = apart.size();
+  count = apart.size();
   kept.insert(kept.end(), apart.begin(), apart.end());
+  return kept;
+}
+
+}  // namespace
+
+// Faces that could not join the surface (an edge with a third face, a face turned against its
+// neighbours) are kept, on their own copies of their corners, so no data is lost.
+Mesh assemble(std::vector<Point> positions, const std::vector<Triangle>& triangles,
+              const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
+              MeshSources& sources, std::vector<EdgeUse> uses) {
+  sources.vertex.resize(positions.size());
+  for (std::size_t v = 0; v < positions.size(); ++v) sources.vertex[v] = static_cast<int>(v);
+  sources.face.clear();
+  std::vector<Triangle> rearranged;  // only when some triangles are detached
+  report.faces_detached = 0;
+  if (std::find(detached.begin(), detached.end(), 1) != detached.end()) {
+    rearranged = detach(triangles, detached, positions, sources, report.faces_detached);
+    // Detached triangles move to the end, on new vertices: the uses of the input are not theirs.
+    uses = std::vector<EdgeUse>();
+  } else {
+    sources.face.resize(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t) sources.face[t] = static_cast<int>(t);
+  }
+  const std::vector<Triangle>& kept = report.faces_detached ? rearranged : triangles;
+  const HalfedgeNumbers numbers = halfedge_numbers(kept, std::move(uses));
   Mesh mesh;
-  mesh.reserve(all_positions.size(), kept.size() * 3 / 2 + 3, kept.size());
-  for (const auto& p : all_positions) mesh.add_vertex(p);
-  // Detached triangles move to the end, on new vertices: the uses of the input are then not theirs.
-  if (!apart.empty()) uses = std::vector<EdgeUse>();
-  add_triangles(mesh, kept, std::move(uses));
+  mesh.reserve(with_room(positions.size()), with_room(numbers.edge_corner.size()),
+               with_room(kept.size()));
+  for (const auto& p : positions) mesh.add_vertex(p);
+  std::vector<Point>().swap(positions);
+  add_triangles(mesh, kept, numbers);
   for (std::size_t v = 0; v < original_vertices; ++v) {
     if (mesh.is_isolated(VertexHandle(static_cast<int>(v)))) ++report.isolated_vertices;
   }

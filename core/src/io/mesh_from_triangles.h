@@ -48,7 +48,10 @@ struct MeshSources {
 // open ones. Counts report.faces_detached and the first `original_vertices` vertices no face uses
 // (report.isolated_vertices), and says in `sources` where each element came from. `uses` are the
 // triangles' edge_uses when the caller has them (empty: computed here). Linear in the triangles.
-Mesh assemble(const std::vector<Point>& positions, const std::vector<Triangle>& triangles,
+// The positions and uses are taken so that they are freed as soon as the mesh has what it needs
+// of them; the mesh has room for an eighth more of each element (what filling adds), so that
+// adding the first patch does not copy every array into one twice its size.
+Mesh assemble(std::vector<Point> positions, const std::vector<Triangle>& triangles,
               const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
               MeshSources& sources, std::vector<EdgeUse> uses = {});
 

@@ -187,10 +187,10 @@ struct ElementColumns {
   std::vector<std::vector<double>>* columns = nullptr;
 };
 
-// Reads one element's records; positions and face corners go into `soup` and `corners`, other
-// values into their columns.
+// Reads one element's records; positions and face corners go into `soup` (corners checked
+// against the vertex count once all are read), other values into their columns.
 void read_element(PlyBody& body, const PlyElement& element, const ElementColumns& kept, Soup& soup,
-                  std::vector<long long>& corners, const fs::path& path) {
+                  const fs::path& path) {
   const bool is_vertex = element.name == "vertex";
   const bool is_face = element.name == "face";
   const int axis_of[3] = {find_property(element, {"x"}, false),
@@ -200,7 +200,8 @@ void read_element(PlyBody& body, const PlyElement& element, const ElementColumns
   if (is_vertex) soup.positions.reserve(element.count);  // the header's counts fit the file
   if (is_face) {
     soup.face_end.reserve(element.count);
-    soup.face_line.reserve(element.count);
+    // Triangles, most often; each corner takes at least a byte of the file.
+    soup.corners.reserve(std::min<std::size_t>(3 * element.count, body.remaining()));
   }
   for (unsigned long long r = 0; r < element.count; ++r) {
     body.begin_record(element.name, r, element.count);
@@ -231,7 +232,7 @@ void read_element(PlyBody& body, const PlyElement& element, const ElementColumns
           fail(path, "face " + std::to_string(r) + " has an invalid vertex index " +
                          std::to_string(value));
         }
-        corners.push_back(static_cast<long long>(value));
+        soup.corners.push_back(static_cast<int>(value));
       }
     }
     body.end_record();
@@ -239,7 +240,7 @@ void read_element(PlyBody& body, const PlyElement& element, const ElementColumns
       require_finite(p, r, 0, path);
       soup.positions.push_back(p);
     }
-    if (is_face) soup.end_face(corners.size(), 0);
+    if (is_face) soup.end_face(soup.corners.size(), 0);
   }
 }
 
@@ -310,9 +311,8 @@ Soup parse_ply(std::string_view bytes, const fs::path& path, LoadReport& report)
   PlyBody body(body_bytes, header, path);
   Soup soup;
   const std::vector<ElementColumns> plan = plan_attributes(header, soup, report);
-  std::vector<long long> corners;
   for (std::size_t e = 0; e < header.elements.size(); ++e) {
-    read_element(body, header.elements[e], plan[e], soup, corners, path);
+    read_element(body, header.elements[e], plan[e], soup, path);
   }
   if (!header.unknown_lines.empty()) {
     report.warnings.push_back(std::to_string(header.unknown_lines.size()) +
@@ -326,15 +326,13 @@ Soup parse_ply(std::string_view bytes, const fs::path& path, LoadReport& report)
                               "(the header's counts may be too small)");
   }
   const long long vertex_count = static_cast<long long>(soup.positions.size());
-  soup.corners.reserve(corners.size());
   for (std::size_t f = 0, c = 0; f < soup.face_count(); ++f) {
     for (; c < soup.face_end[f]; ++c) {
-      if (corners[c] >= vertex_count) {
-        fail(path, "face " + std::to_string(f) + " refers to vertex " + std::to_string(corners[c]) +
-                       ", but the file has " + std::to_string(vertex_count) +
-                       " vertices (numbered from 0)");
+      if (soup.corners[c] >= vertex_count) {
+        fail(path, "face " + std::to_string(f) + " refers to vertex " +
+                       std::to_string(soup.corners[c]) + ", but the file has " +
+                       std::to_string(vertex_count) + " vertices (numbered from 0)");
       }
-      soup.corners.push_back(static_cast<int>(corners[c]));
     }
   }
   return soup;

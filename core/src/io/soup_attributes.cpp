@@ -66,6 +66,8 @@ bool has_corner_values(const Soup& soup) {
   return !soup.corner_texcoord.empty() || !soup.corner_normal.empty();
 }
 
+bool has_attributes(const Soup& soup) { return !soup.layout.empty() || has_obj_values(soup); }
+
 void copy_soup_attributes(const Soup& soup, const SoupOrigins& origins, Mesh& mesh) {
   copy_layout_values(soup, origins, mesh);
   copy_obj_values(soup, origins, mesh);

@@ -23,6 +23,9 @@ struct SoupOrigins {
 // Whether the soup carries values per corner (the origins' corners are then needed).
 bool has_corner_values(const Soup& soup);
 
+// Whether the soup carries anything copy_soup_attributes would copy.
+bool has_attributes(const Soup& soup);
+
 // Copies the soup's attributes to the mesh's elements (nothing when it carries none).
 void copy_soup_attributes(const Soup& soup, const SoupOrigins& origins, Mesh& mesh);
 

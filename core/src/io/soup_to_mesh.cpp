@@ -361,30 +361,37 @@ std::vector<char> make_consistent(std::vector<Triangle>& triangles, std::vector<
 
 }  // namespace
 
-Mesh build_mesh(const Soup& soup, LoadReport& report) {
+Mesh build_mesh(Soup soup, LoadReport& report) {
   const bool track_corners = has_corner_values(soup);
   std::vector<Triangle> triangles;
   std::vector<Triangle> corners;   // the soup corners of each triangle, when tracked
   std::vector<int> triangle_face;  // the polygon each triangle came from
   triangles.reserve(soup.corners.size() / 3 + soup.face_count());
+  triangle_face.reserve(triangles.capacity());
   std::vector<int> polygon;
   for (std::size_t f = 0; f < soup.face_count(); ++f) {
     triangulate_face(soup, f, polygon, triangles, track_corners ? &corners : nullptr, report);
     triangle_face.resize(triangles.size(), static_cast<int>(f));
   }
+  // The polygons are triangles now.
+  std::vector<int>().swap(soup.corners);
+  std::vector<std::size_t>().swap(soup.face_end);
+  std::vector<std::size_t>().swap(soup.face_line);
   report.duplicate_faces_dropped = drop_duplicate_triangles(triangles, triangle_face, corners);
   if (report.format != "stl") {
     report.duplicate_positions = count_duplicate_positions(soup.positions);
   }
-  std::vector<Point> positions = soup.positions;
+  std::vector<Point> positions = std::move(soup.positions);
+  const std::size_t original_vertices = positions.size();
   std::vector<int> origin(positions.size());
   for (std::size_t v = 0; v < origin.size(); ++v) origin[v] = static_cast<int>(v);
   std::vector<EdgeUse> uses;
   const std::vector<char> detached =
       make_consistent(triangles, corners, positions, origin, report, uses);
   MeshSources sources;
-  Mesh mesh = assemble(positions, triangles, detached, soup.positions.size(), report, sources,
-                       std::move(uses));
+  Mesh mesh = assemble(std::move(positions), triangles, detached, original_vertices, report,
+                       sources, std::move(uses));
+  if (!has_attributes(soup)) return mesh;
   SoupOrigins origins;
   origins.vertex.reserve(sources.vertex.size());
   for (const int v : sources.vertex) origins.vertex.push_back(origin[v]);

@@ -10,8 +10,9 @@
 namespace holefill::io {
 
 // The mesh the soup describes after the repairs above (report.format must be set: STL's welded
-// positions are not counted as duplicates).
-Mesh build_mesh(const Soup& soup, LoadReport& report);
+// positions are not counted as duplicates). The soup is taken so that its arrays can be freed as
+// soon as they are used up, before the mesh's are made.
+Mesh build_mesh(Soup soup, LoadReport& report);
 
 // One sentence per kind of repair counted in `report`, appended to report.warnings.
 void add_warnings(LoadReport& report);

@@ -124,6 +124,7 @@ std::string ply_header(const Mesh& mesh, const AttributeLayout& layout) {
 std::string ply_bytes(const Mesh& mesh) {
   const AttributeLayout layout = attribute_layout(mesh);
   std::string out = ply_header(mesh, layout);
+  reserve_records(out, mesh, 3 + layout.vertex.size(), 4 + layout.face.size());
   ValueWriter writer(out, layout.encoding);
   const auto vertex_values = vertex_properties(mesh, layout);
   for (const auto v : mesh.vertices()) {
@@ -174,6 +175,7 @@ std::string off_bytes(const Mesh& mesh) {
   std::string out = std::string(colour.empty() ? "" : "C") + (normal.empty() ? "" : "N") + "OFF\n" +
                     std::to_string(mesh.n_vertices()) + ' ' + std::to_string(mesh.n_faces()) +
                     " 0\n";
+  reserve_records(out, mesh, 3 + normal.size() + colour.size(), 4 + layout.face.size());
   ValueWriter writer(out, FileEncoding::Ascii);
   append_vertices(mesh, out, "", [&](VertexHandle v) {
     for (const auto& list : {normal, colour}) {
