@@ -26,10 +26,19 @@
 
 namespace holefill::detail {
 
-// Refinement's relaxation test on edge a-b between triangles (a, b, c) and (b, a, d): the two
-// angles opposite the edge sum to more than pi and the swapped edge c-d's opposite angles sum
-// to less (should_swap_edge in refine.h).
-bool should_swap_quad(const Point& a, const Point& b, const Point& c, const Point& d);
+// One bit per face, and a quick way to the next face whose bit is set.
+class FaceFlags {
+ public:
+  void grow(int faces) { words_.resize((static_cast<std::size_t>(faces) + 63) / 64, 0); }
+  void set(int face) { words_[face >> 6] |= bit(face); }
+  void clear(int face) { words_[face >> 6] &= ~bit(face); }
+  // The first face from `face` on whose bit is set, or `end` when none is below `end`.
+  int next(int face, int end) const;
+
+ private:
+  static std::uint64_t bit(int face) { return std::uint64_t{1} << (face & 63); }
+  std::vector<std::uint64_t> words_;
+};
 
 class FlatPatch {
  public:
@@ -48,13 +57,21 @@ class FlatPatch {
   // The face's edges, as the mesh's fe_range lists them.
   std::array<int, 3> edges(int face) const;
 
+  // The first face from `face` on (below `end`, else `end`) that is new or changed since
+  // settle_face() marked it: positions and scales never change, so a face that refinement tested
+  // and left would be left again.
+  int next_untested(int face, int end) const { return untested_.next(face, end); }
+  void settle_face(int face) { untested_.clear(face); }
+
   // Splits the face at a new vertex (position, scale): OpenMesh's split(face, vertex). Appends
   // two faces and marks all three as refined.
   void split(int face, const Point& position, double scale);
 
   // Whether refinement swaps the edge: both its faces are the patch's, should_swap_quad says so
-  // and the swapped edge is not in the mesh yet (OpenMesh's is_flip_ok).
-  bool swappable(int edge) const;
+  // and the swapped edge is not in the mesh yet (OpenMesh's is_flip_ok). The geometric test's
+  // "no" is remembered until a split or flip changes one of the edge's faces: relaxation sweeps
+  // the whole patch after every round, and most edges are long settled.
+  bool swappable(int edge);
   // OpenMesh's flip(edge); the edge must be swappable.
   void flip(int edge);
   // Swaps edges, face by face and edge by edge, in sweeps until a sweep swaps none or after
@@ -63,7 +80,8 @@ class FlatPatch {
 
   // Writes the patch into the mesh: the new vertices (with scale and Stage::Refined in `tags`)
   // and faces, the split faces' stage, every patch halfedge's links; appends the new faces and
-  // vertices to `patch` in their local order. Call once, on the mesh it was copied from.
+  // vertices to `patch` in their local order. Call once, on the mesh it was copied from (else
+  // std::logic_error).
   void write_back(Mesh& mesh, const PatchTags& tags, Patch& patch) const;
   // The same for a patch that only had edges swapped (no tags needed).
   void write_links(Mesh& mesh) const;
@@ -72,32 +90,38 @@ class FlatPatch {
   int add_vertex(const Mesh& mesh, VertexHandle vertex, OpenMesh::VPropHandleT<double> scale);
   int local_halfedge(const Mesh& mesh, HalfedgeHandle halfedge,
                      OpenMesh::VPropHandleT<double> scale);
-  int add_edge(int from, int to);
-  int global_vertex(int vertex) const;
-  int global_halfedge(int halfedge) const;
-  int global_face(int face) const;
+  int add_edge(int from, int to, int handle);
+  int add_face(int halfedge, int handle);
+  int global_halfedge(int halfedge) const {
+    return 2 * edge_handle_[halfedge >> 1] + (halfedge & 1);
+  }
   void count_edge(int a, int b, int change);
-  bool has_edge(int a, int b) const;
+  bool has_edge(int a, int from_a, int b, int from_b) const;
   bool has_outside_edge(int a, int b) const;
   void link(int h0, int h1, int h2, int face);
+  void unsettle_edge(int edge);
 
   const Mesh& mesh_;
   int mesh_vertices_, mesh_edges_, mesh_faces_;  // the mesh's counts when copied
   int loaded_vertices_ = 0, loaded_edges_ = 0, loaded_faces_ = 0;
-  // Per vertex.
+  // Per vertex; handles are the mesh's indices (new elements' are those they will get).
   std::vector<Point> points_;
   std::vector<double> scales_;
-  std::vector<int> vertex_handle_;    // the mesh's index of each loaded vertex
+  std::vector<int> vertex_handle_;
   std::vector<int> vertex_halfedge_;  // the mesh's index of its outgoing halfedge
   // Per halfedge (2e, 2e + 1 for edge e); next_ and face_ are -1 outside the patch.
   std::vector<int> next_, to_, face_;
-  std::vector<int> edge_handle_;  // the mesh's index of each loaded edge
+  // Per edge.
+  std::vector<int> edge_handle_;
+  std::vector<std::uint8_t> edge_settled_;  // should_swap_quad said no, and the quad is the same
   // Per face.
   std::vector<int> face_halfedge_, face_handle_;
   std::vector<std::uint8_t> refined_;
+  FaceFlags untested_;          // see next_untested()
+  FaceFlags unsettled_;         // one of the face's edges is not settled
   FlatIndexMap edge_index_;     // the mesh's edge index -> loaded edge
   FlatIndexMap vertex_index_;   // the mesh's vertex index -> loaded vertex
-  FlatIndexMap edges_between_;  // (vertex, vertex) -> number of patch edges joining them
+  FlatIndexMap edges_between_;  // two loaded vertices -> number of patch edges joining them
 };
 
 }  // namespace holefill::detail

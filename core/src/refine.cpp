@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "delaunay_swap.h"
 #include "flat_patch.h"
 #include "patch_face_set.h"
 
@@ -36,6 +37,38 @@ bool split_where_too_coarse(detail::FlatPatch& flat, int face, double tau, Refin
     }
   }
   return true;
+}
+
+// Which limit stops refinement before it tests another face: the face limit first.
+enum class Stop { None, FaceLimit, VertexCap };
+
+Stop limit_reached(const detail::FlatPatch& flat, std::size_t vertices_before,
+                   const RefineOptions& options, std::size_t vertex_cap) {
+  if (static_cast<std::size_t>(flat.face_count()) + 2 > options.max_patch_faces) {
+    return Stop::FaceLimit;
+  }
+  const std::size_t vertices = vertices_before + flat.new_vertex_count();
+  return vertex_cap && vertices >= vertex_cap ? Stop::VertexCap : Stop::None;
+}
+
+// One round: every face that was there when it began, in order, split where too coarse, until a
+// limit stops it. The limits are asked before each face, as they change only with a split.
+Stop refine_round(detail::FlatPatch& flat, std::size_t vertices_before,
+                  const RefineOptions& options, RefineResult& result, std::size_t& splits) {
+  const int faces_now = flat.face_count();  // faces split off in this round wait for the next
+  Stop stop =
+      faces_now > 0 ? limit_reached(flat, vertices_before, options, result.vertex_cap) : Stop::None;
+  for (int face = flat.next_untested(0, faces_now); stop == Stop::None && face < faces_now;
+       face = flat.next_untested(face + 1, faces_now)) {
+    if (!split_where_too_coarse(flat, face, options.tau, result)) {
+      flat.settle_face(face);
+      continue;
+    }
+    ++splits;
+    if (face + 1 < faces_now)
+      stop = limit_reached(flat, vertices_before, options, result.vertex_cap);
+  }
+  return stop;
 }
 
 // RefineOptions::max_density's cap on the new vertices of this patch; 0 when there is none (no
@@ -89,19 +122,9 @@ RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options
   const std::size_t vertices_before = patch.new_vertices.size();
   for (int round = 0; round < kMaxRefineRounds; ++round) {
     std::size_t splits_now = 0;
-    const int faces_now = flat.face_count();  // faces split off in this round wait for the next
-    for (int face = 0; face < faces_now; ++face) {
-      if (static_cast<std::size_t>(flat.face_count()) + 2 > options.max_patch_faces) {
-        result.stopped_at_face_limit = true;
-        break;
-      }
-      const std::size_t vertices = vertices_before + flat.new_vertex_count();
-      if (result.vertex_cap && vertices >= result.vertex_cap) {
-        result.stopped_at_vertex_cap = true;
-        break;
-      }
-      if (split_where_too_coarse(flat, face, options.tau, result)) ++splits_now;
-    }
+    const Stop stop = refine_round(flat, vertices_before, options, result, splits_now);
+    result.stopped_at_face_limit = stop == Stop::FaceLimit;
+    result.stopped_at_vertex_cap = stop == Stop::VertexCap;
     result.splits += splits_now;
     if (splits_now == 0 || result.stopped_at_face_limit) break;
     result.swaps += flat.relax(kMaxRelaxSweeps);

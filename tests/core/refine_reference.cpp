@@ -10,12 +10,21 @@
 namespace holefill::testing {
 namespace {
 
+double angle_at(const Point& corner, const Point& a, const Point& b) {
+  const Point u = a - corner, v = b - corner;
+  return std::atan2(OpenMesh::cross(u, v).norm(), OpenMesh::dot(u, v));
+}
+
 bool swappable(const Mesh& mesh, const detail::PatchFaceSet& patch_faces, EdgeHandle e) {
   const auto h0 = mesh.halfedge_handle(e, 0), h1 = mesh.halfedge_handle(e, 1);
   if (!patch_faces.contains(mesh.face_handle(h0)) || !patch_faces.contains(mesh.face_handle(h1))) {
     return false;
   }
-  return should_swap_edge(mesh, e) && mesh.is_flip_ok(e);
+  const Point& a = mesh.point(mesh.from_vertex_handle(h0));
+  const Point& b = mesh.point(mesh.to_vertex_handle(h0));
+  const Point& c = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h0)));
+  const Point& d = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h1)));
+  return swap_by_angles(a, b, c, d) && mesh.is_flip_ok(e);
 }
 
 constexpr int kMaxRelaxSweeps = 100;
@@ -94,6 +103,12 @@ bool split_face(Mesh& mesh, Patch& patch, detail::PatchFaceSet& patch_faces, Fac
 }
 
 }  // namespace
+
+bool swap_by_angles(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double now = angle_at(c, a, b) + angle_at(d, a, b);
+  const double swapped = angle_at(a, c, d) + angle_at(b, c, d);
+  return now > M_PI + 1e-9 && swapped < now - 1e-9;
+}
 
 std::size_t reference_relax_patch_edges(Mesh& mesh, const Patch& patch) {
   return relax_edges(mesh, detail::PatchFaceSet(patch), patch.faces);

@@ -9,6 +9,11 @@
 
 namespace holefill::testing {
 
+// The relaxation's swap test by its definition, with four atan2: edge a-b between triangles
+// (a, b, c) and (b, a, d) swaps when its opposite angles sum to more than pi + 1e-9 and the
+// swapped edge's sum to less than theirs - 1e-9.
+bool swap_by_angles(const Point& a, const Point& b, const Point& c, const Point& d);
+
 // refine_patch as it was, without the remeshing (RefineOptions::remesh is ignored).
 RefineResult reference_refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options);
 
