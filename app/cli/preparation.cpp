@@ -88,6 +88,7 @@ PreparedMesh prepare_mesh(Mesh& mesh, const PreparationChoice& choice, const std
   prepared.pieces = mesh_pieces(mesh);
   tell_pieces(prepared, choice, path, out);
   prepared.holes = find_holes(mesh);
+  if (separate_touching_holes(mesh, prepared.holes) > 0) prepared.holes = find_holes(mesh);
   prepared.classes = classify_loops(mesh, prepared.holes, prepared.pieces);
   for (std::size_t i = 0; i < prepared.holes.size(); ++i) {
     const Hole& hole = prepared.holes[i];

@@ -46,6 +46,7 @@ bool Session::open(const std::filesystem::path& path) {
 void Session::load(Mesh mesh, std::string name) {
   name_ = std::move(name);
   holes_ = find_holes(mesh);
+  if (separate_touching_holes(mesh, holes_) > 0) holes_ = find_holes(mesh);
   loaded_ = std::make_shared<const MeshState>(
       MeshState{std::move(mesh), std::vector<HoleFill>(holes_.size())});
   const Mesh& loaded = loaded_->mesh;

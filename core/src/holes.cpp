@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace holefill {
 
@@ -38,6 +39,73 @@ Hole hole_through(const Mesh& mesh, HalfedgeHandle start) {
   hole.mean_surrounding_edge_length =
       surrounding_count ? surrounding_length / static_cast<double>(surrounding_count) : 0.0;
   return hole;
+}
+
+namespace {
+
+// The out-going boundary halfedge that ends the fan of faces around v which starts at boundary
+// halfedge `in` (u -> v): the faces are walked from in's opposite across the edges at v. Invalid
+// when the walk does not end (broken links).
+HalfedgeHandle fan_end(const Mesh& mesh, HalfedgeHandle in) {
+  HalfedgeHandle out = mesh.opposite_halfedge_handle(in);  // v -> u, in the fan's first face
+  for (std::size_t step = 0; step <= mesh.n_halfedges(); ++step) {
+    const HalfedgeHandle next_out = mesh.opposite_halfedge_handle(mesh.prev_halfedge_handle(out));
+    if (mesh.is_boundary(next_out)) return next_out;
+    out = next_out;
+  }
+  return HalfedgeHandle();
+}
+
+// Splits `hole` at its first vertex passed several times whose stretches are all gaps; true when
+// it did.
+bool separate_at_a_pinch(Mesh& mesh, const Hole& hole) {
+  std::unordered_map<int, std::vector<std::size_t>> passes;
+  for (std::size_t i = 0; i < hole.size(); ++i) passes[hole.vertices[i].idx()].push_back(i);
+  for (std::size_t i = 0; i < hole.size(); ++i) {
+    const std::vector<std::size_t>& at = passes[hole.vertices[i].idx()];
+    if (at.size() < 2 || at.front() != i) continue;
+    // Stretch j runs from halfedge at[j] (out of the vertex) to the one before at[j + 1] (into it).
+    auto last_of = [&](std::size_t j) {
+      return hole.halfedges[(at[(j + 1) % at.size()] + hole.size() - 1) % hole.size()];
+    };
+    bool all_gaps = true;
+    for (std::size_t j = 0; j < at.size() && all_gaps; ++j) {
+      all_gaps = fan_end(mesh, last_of(j)) != hole.halfedges[at[j]];
+    }
+    if (!all_gaps) continue;
+    for (std::size_t j = 0; j < at.size(); ++j) {
+      mesh.set_next_halfedge_handle(last_of(j), hole.halfedges[at[j]]);
+    }
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::size_t separate_touching_holes(Mesh& mesh, const std::vector<Hole>& holes) {
+  std::size_t added = 0;
+  std::vector<Hole> work;
+  for (const auto& hole : holes) {
+    if (hole.repeated_vertices > 0) work.push_back(hole);
+  }
+  while (!work.empty()) {
+    const Hole hole = std::move(work.back());
+    work.pop_back();
+    if (hole.repeated_vertices == 0 || !separate_at_a_pinch(mesh, hole)) continue;
+    // The loop fell apart into one loop per stretch: look at each again (another vertex of it
+    // may be passed twice too).
+    const std::size_t before = work.size();
+    std::unordered_set<int> seen;
+    for (const auto h : hole.halfedges) {
+      if (seen.count(h.idx())) continue;
+      Hole piece = hole_through(mesh, h);
+      for (const auto piece_h : piece.halfedges) seen.insert(piece_h.idx());
+      work.push_back(std::move(piece));
+    }
+    added += work.size() - before - 1;
+  }
+  return added;
 }
 
 std::vector<Hole> find_holes(const Mesh& mesh) {

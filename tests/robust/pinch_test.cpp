@@ -6,6 +6,7 @@
 #include "fill_guarantees.h"
 #include "holefill/fill.h"
 #include "holefill/holes.h"
+#include "holefill/io.h"
 #include "test_meshes.h"
 
 namespace holefill::testing {
@@ -52,6 +53,83 @@ TEST(PinchedLoops, ALoopThroughABowtieIsFilledAsTwoCornersAndTheVertexBecomesMan
   EXPECT_TRUE(p.after.is_manifold(VertexHandle(0)));
   EXPECT_FALSE(p.after.is_boundary(VertexHandle(0)));  // its two gaps are both closed
   EXPECT_TRUE(find_holes(p.after).empty());
+}
+
+// A disk of 24 sectors and 3 rings around a centre (vertex 0), bowl-shaped, without the centre's
+// triangles in sectors 0-2, 8-10 and 16-18: three gaps at the centre, between three fans.
+constexpr int kSectors = 24;
+Soup disk_with_three_gaps_at_its_centre() {
+  Soup disk{{{0, 0, 0}}, {}};
+  auto at = [](int ring, int sector) { return 1 + (ring - 1) * kSectors + sector % kSectors; };
+  for (int ring = 1; ring <= 3; ++ring) {
+    for (int s = 0; s < kSectors; ++s) {
+      const double a = 2 * M_PI * s / kSectors;
+      disk.points.emplace_back(ring * std::cos(a), ring * std::sin(a), 0.05 * ring * ring);
+    }
+  }
+  for (int s = 0; s < kSectors; ++s) {
+    if (s % 8 > 2) disk.faces.push_back({0, at(1, s), at(1, s + 1)});
+    for (int ring = 1; ring < 3; ++ring) {
+      disk.faces.push_back({at(ring, s), at(ring + 1, s), at(ring + 1, s + 1)});
+      disk.faces.push_back({at(ring, s), at(ring + 1, s + 1), at(ring, s + 1)});
+    }
+  }
+  return disk;
+}
+
+TEST(PinchedLoops, GapsBetweenThreeFansAreSeparatedIntoHolesOfTheirOwnAndEachIsFilledInItsGap) {
+  const Soup soup = disk_with_three_gaps_at_its_centre();
+  Mesh mesh = load_mesh_from_memory(obj_text(soup), "disk.obj");
+  const std::vector<Hole> loaded = find_holes(mesh);
+  // As built face by face, the three gaps come out as one loop through the centre three times.
+  ASSERT_EQ(loaded.size(), 2u);
+  ASSERT_EQ(loaded[0].size(), 24u);  // the rim
+  ASSERT_EQ(loaded[1].repeated_vertices, 1u);
+  EXPECT_EQ(separate_touching_holes(mesh, loaded), 2u);
+  const std::vector<Hole> holes = find_holes(mesh);
+  ASSERT_EQ(holes.size(), 4u);
+  for (int id = 1; id <= 3; ++id) {
+    const Hole& gap = holes[id];
+    ASSERT_EQ(gap.size(), 5u);  // the centre and four points of the first ring
+    EXPECT_EQ(gap.repeated_vertices, 0u);
+    // All four ring points of one gap: sectors s0 .. s0 + 3 for s0 = 0, 8 or 16.
+    int first_sector = kSectors;
+    for (const auto v : gap.vertices) {
+      if (v.idx() > 0) first_sector = std::min(first_sector, (v.idx() - 1) % kSectors);
+    }
+    EXPECT_EQ(first_sector % 8, 0);
+    for (const auto v : gap.vertices) {
+      if (v.idx() == 0) continue;
+      EXPECT_LT(v.idx(), 1 + kSectors);  // on the first ring
+      EXPECT_LE((v.idx() - 1) % kSectors - first_sector, 3);
+    }
+  }
+  const Pinched p = fill_all(mesh);
+  EXPECT_EQ(check_fill_guarantees(p.before, p.holes, p.after, p.fills), "");
+  for (const auto& fill : p.fills) EXPECT_FALSE(fill.failed()) << fill.failure;
+  EXPECT_TRUE(p.after.is_manifold(VertexHandle(0)));
+  EXPECT_FALSE(p.after.is_boundary(VertexHandle(0)));
+  // Every patch triangle lies in a gap (its centroid's angle about the centre within sectors
+  // s0 .. s0 + 3): no patch reaches across a fan.
+  for (const auto& fill : p.fills) {
+    if (fill.patch.hole_id == 0) continue;  // the rim, closed too
+    for (const auto f : fill.patch.faces) {
+      const Point c = p.after.calc_face_centroid(f);
+      const double sector = std::atan2(c[1], c[0]) / (2 * M_PI) * kSectors;
+      const double in_gap = std::fmod(sector + kSectors, 8.0);
+      EXPECT_GE(in_gap, 0.0);
+      EXPECT_LE(in_gap, 3.0) << "sector " << sector;
+    }
+  }
+}
+
+TEST(PinchedLoops, ALoopAroundTheRimsOfABowtieIsNotSeparated) {
+  Mesh mesh = bowtie_of_fans();
+  const std::vector<Hole> holes = find_holes(mesh);
+  ASSERT_EQ(holes.size(), 1u);
+  EXPECT_EQ(separate_touching_holes(mesh, holes), 0u);
+  ASSERT_EQ(find_holes(mesh).size(), 1u);
+  EXPECT_EQ(find_holes(mesh)[0].halfedges, holes[0].halfedges);
 }
 
 // A terrain with a square ring of cells removed around a square island of cells, the island

@@ -26,6 +26,18 @@ struct Hole {
 // All boundary loops of the mesh, largest first (ties: lowest halfedge index first).
 std::vector<Hole> find_holes(const Mesh& mesh);
 
+// Holes that touch at a vertex, or one hole that runs around several gaps between the fans of
+// faces at a vertex, may come out of OpenMesh as one loop passing the vertex several times,
+// its passes paired in whatever order the faces were added: a patch over that loop would join
+// the gaps, and one with three or more passes cannot even be added. This relinks the boundary at
+// such a vertex so that each stretch of the loop from the vertex back to it becomes a loop of its
+// own, when every stretch is a gap (its two edges at the vertex lie in different fans). A loop
+// that runs around a fan's own rim (a bowtie of two fans, nothing between them) is left as it
+// is: splitting it there would close each fan on its own back. Only boundary links change (no
+// element is added, removed or moved). `holes` are find_holes(mesh); when this returns more than
+// 0 (the loops added), find the holes again.
+std::size_t separate_touching_holes(Mesh& mesh, const std::vector<Hole>& holes);
+
 // The loop through one boundary halfedge, as find_holes would describe it (id left at -1).
 Hole hole_through(const Mesh& mesh, HalfedgeHandle boundary_halfedge);
 
