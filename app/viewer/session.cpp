@@ -28,7 +28,7 @@ bool Session::open(const std::filesystem::path& path) {
     for (const auto& warning : report.warnings) text += "\n" + warning;
     if (stitched.edges_stitched > 0) {
       text += "\nStitched " + std::to_string(stitched.edges_stitched) + " boundary edges in " +
-              std::to_string(stitched.seams) + " seams (" +
+              std::to_string(stitched.seams) + (stitched.seams == 1 ? " seam (" : " seams (") +
               std::to_string(stitched.vertices_merged) + " vertices merged";
       if (stitched.t_junctions > 0) {
         text += ", " + std::to_string(stitched.t_junctions) + " T-junctions split";
