@@ -43,6 +43,22 @@ inline BoundaryPoints boundary_points(const Mesh& mesh) {
   return points;
 }
 
+// A mesh's boundary points and their k-d tree, built once for the searches of one stitch (the
+// tree's build is a good part of stitching a mesh whose every vertex is on a boundary). The tree
+// refers to `points`: an index stays where it was made.
+struct BoundaryIndex {
+  explicit BoundaryIndex(const Mesh& mesh)
+      : points(boundary_points(mesh)),
+        tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {
+    if (!points.vertices.empty()) tree.buildIndex();
+  }
+  BoundaryIndex(const BoundaryIndex&) = delete;
+  BoundaryIndex& operator=(const BoundaryIndex&) = delete;
+
+  BoundaryPoints points;
+  BoundaryPointTree tree;
+};
+
 // The indices (into points.vertices) of the points within `radius` of `centre`, possibly with a
 // few just outside it: nanoflann keeps points strictly inside the squared radius, so the search
 // is widened by one ulp and callers test the exact distance they need.

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -27,22 +28,45 @@ double default_tolerance(const Mesh& mesh) {
   return mesh.n_vertices() ? kDefaultStitchRelativeTolerance * (high - low).norm() : 0.0;
 }
 
-// For each point, the points within `tolerance` of it (itself included).
-std::vector<std::vector<VertexHandle>> vertices_within(const BoundaryPoints& points,
-                                                       double tolerance) {
-  detail::BoundaryPointTree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tree.buildIndex();
-  std::vector<std::vector<VertexHandle>> near(points.vertices.size());
+// Lists of integers, one per key 0 .. n-1, in two flat arrays (compressed rows): the stitch
+// keeps one per boundary point of a mesh that may have millions, where a vector each would cost
+// an allocation each.
+struct FlatLists {
+  std::vector<std::uint32_t> start;  // list i is items[start[i] .. start[i + 1])
+  std::vector<int> items;
+  std::span<const int> operator[](std::size_t i) const {
+    return {items.data() + start[i], items.data() + start[i + 1]};
+  }
+};
+
+// Builds FlatLists from (key, item) pairs, items in the order given.
+FlatLists flat_lists(std::size_t keys, const std::vector<std::pair<int, int>>& pairs) {
+  FlatLists lists;
+  lists.start.assign(keys + 1, 0);
+  for (const auto& [key, item] : pairs) ++lists.start[static_cast<std::size_t>(key) + 1];
+  for (std::size_t k = 0; k < keys; ++k) lists.start[k + 1] += lists.start[k];
+  lists.items.resize(pairs.size());
+  std::vector<std::uint32_t> next(lists.start.begin(), lists.start.end() - 1);
+  for (const auto& [key, item] : pairs) lists.items[next[static_cast<std::size_t>(key)]++] = item;
+  return lists;
+}
+
+// For each point, the points within `tolerance` of it (itself included), as point indices.
+FlatLists points_within(const detail::BoundaryIndex& index, double tolerance) {
+  const BoundaryPoints& points = index.points;
+  std::vector<std::pair<int, int>> pairs;
   std::vector<std::pair<std::size_t, double>> found;
   for (std::size_t s = 0; s < points.vertices.size(); ++s) {
     const Point& at = points.mesh.point(points.vertices[s]);
-    detail::points_near(tree, at, tolerance, found);
+    detail::points_near(index.tree, at, tolerance, found);
+    std::sort(found.begin(), found.end());  // the order of the point list, whatever the tree's
     for (const auto& [index, squared] : found) {
-      const VertexHandle v = points.vertices[index];
-      if ((points.mesh.point(v) - at).norm() <= tolerance) near[s].push_back(v);
+      if ((points.mesh.point(points.vertices[index]) - at).norm() <= tolerance) {
+        pairs.emplace_back(static_cast<int>(s), static_cast<int>(index));
+      }
     }
   }
-  return near;
+  return flat_lists(points.vertices.size(), pairs);
 }
 
 // Boundary halfedges a->b and b'->a' with a' within the tolerance of a and b' of b, each listed
@@ -51,10 +75,16 @@ std::vector<std::vector<VertexHandle>> vertices_within(const BoundaryPoints& poi
 struct Matches {
   std::vector<std::pair<HalfedgeHandle, HalfedgeHandle>> pairs;
   std::size_t halfedges_on_another = 0;  // boundary halfedges lying on at least one other
+  std::vector<char> on_another;          // per halfedge: whether it lies on another
 };
 
-Matches matching_boundary_edges(const Mesh& mesh, double tolerance) {
-  const BoundaryPoints points = detail::boundary_points(mesh);
+// A vertex with more boundary halfedges leaving it than this (a pinch of many fans) has its
+// partners looked up by their ends rather than scanned, which would be quadratic in the fans.
+constexpr std::size_t kScanLimit = 16;
+
+Matches matching_boundary_edges(const Mesh& mesh, const detail::BoundaryIndex& index,
+                                double tolerance) {
+  const BoundaryPoints& points = index.points;
   std::vector<int> slot(mesh.n_vertices(), -1);
   for (std::size_t s = 0; s < points.vertices.size(); ++s) {
     slot[points.vertices[s].idx()] = static_cast<int>(s);
@@ -62,36 +92,52 @@ Matches matching_boundary_edges(const Mesh& mesh, double tolerance) {
   Matches matches;
   if (points.vertices.empty()) return matches;
   // Every boundary vertex is the end of a boundary halfedge, so both ends of one have a slot.
-  auto ends_key = [&](VertexHandle from, VertexHandle to) {
-    return (static_cast<std::uint64_t>(slot[from.idx()]) << 32) |
-           static_cast<std::uint32_t>(slot[to.idx()]);
+  auto ends_key = [](int from_slot, int to_slot) {
+    return (static_cast<std::uint64_t>(from_slot) << 32) | static_cast<std::uint32_t>(to_slot);
   };
-  // Boundary halfedges by their ends, so that a vertex on thousands of them (a pinch of many fans)
-  // finds its partners by lookup, not by scanning them all for each one.
-  std::unordered_map<std::uint64_t, std::vector<HalfedgeHandle>> by_ends;
-  for (const auto h : mesh.halfedges()) {
-    if (mesh.is_boundary(h)) {
-      by_ends[ends_key(mesh.from_vertex_handle(h), mesh.to_vertex_handle(h))].push_back(h);
-    }
-  }
-  const std::vector<std::vector<VertexHandle>> near = vertices_within(points, tolerance);
-
-  std::vector<int> match_of(mesh.n_halfedges(), -1);
+  // The boundary halfedges leaving each point, and all of them sorted by their ends.
+  std::vector<std::pair<int, int>> leaving;
+  std::vector<std::pair<std::uint64_t, int>> by_ends;
   for (const auto h : mesh.halfedges()) {
     if (!mesh.is_boundary(h)) continue;
-    const VertexHandle p = mesh.from_vertex_handle(h), q = mesh.to_vertex_handle(h);
+    const int from = slot[mesh.from_vertex_handle(h).idx()],
+              to = slot[mesh.to_vertex_handle(h).idx()];
+    leaving.emplace_back(from, h.idx());
+    by_ends.emplace_back(ends_key(from, to), h.idx());
+  }
+  const FlatLists out_of = flat_lists(points.vertices.size(), leaving);
+  std::sort(by_ends.begin(), by_ends.end());
+  const FlatLists near = points_within(index, tolerance);
+
+  std::vector<int> match_of(mesh.n_halfedges(), -1);
+  std::vector<char> near_p(points.vertices.size(), 0);
+  for (const auto h : mesh.halfedges()) {
+    if (!mesh.is_boundary(h)) continue;
+    const int p = slot[mesh.from_vertex_handle(h).idx()], q = slot[mesh.to_vertex_handle(h).idx()];
     int count = 0;
-    for (const VertexHandle to_near_p : near[slot[p.idx()]]) {
-      for (const VertexHandle from_near_q : near[slot[q.idx()]]) {
-        const auto found = by_ends.find(ends_key(from_near_q, to_near_p));
-        if (found == by_ends.end()) continue;
-        for (const auto other : found->second) {
-          if (other != h) match_of[h.idx()] = count++ ? -2 : other.idx();
+    auto found = [&](int other) {
+      if (other != h.idx()) match_of[h.idx()] = count++ ? -2 : other;
+    };
+    for (const int p2 : near[p]) near_p[p2] = 1;
+    for (const int q2 : near[q]) {
+      const auto leaving_q2 = out_of[q2];
+      if (leaving_q2.size() <= kScanLimit) {
+        for (const int other : leaving_q2) {
+          if (near_p[slot[mesh.to_vertex_handle(HalfedgeHandle(other)).idx()]]) found(other);
         }
+        continue;
+      }
+      for (const int p2 : near[p]) {
+        const std::uint64_t key = ends_key(q2, p2);
+        auto at = std::lower_bound(by_ends.begin(), by_ends.end(), std::make_pair(key, -1));
+        for (; at != by_ends.end() && at->first == key; ++at) found(at->second);
       }
     }
+    for (const int p2 : near[p]) near_p[p2] = 0;
     if (count > 0) ++matches.halfedges_on_another;
   }
+  matches.on_another.resize(mesh.n_halfedges());
+  for (std::size_t h = 0; h < match_of.size(); ++h) matches.on_another[h] = match_of[h] != -1;
   for (const auto h : mesh.halfedges()) {
     const int other = match_of[h.idx()];
     if (other > h.idx() && match_of[other] == h.idx()) {
@@ -191,11 +237,10 @@ bool merge_vertices(Mesh& mesh, const std::vector<int>& kept_of) {
 }
 
 // Stitches the boundary edges that lie on each other end to end (stitch_borders without the
-// T-junctions).
-StitchReport stitch_matching_edges(Mesh& mesh, double tolerance) {
+// T-junctions); `matches` are the mesh's as it is now.
+StitchReport stitch_matching_edges(Mesh& mesh, const Matches& matches, double tolerance) {
   StitchReport report;
   report.tolerance = tolerance;
-  const Matches matches = matching_boundary_edges(mesh, report.tolerance);
   std::vector<std::pair<HalfedgeHandle, HalfedgeHandle>> pairs = matches.pairs;
 
   // Join the ends of every pair; a group whose merge would not be clean gives up its pairs, and
@@ -272,7 +317,8 @@ std::optional<StitchReport> stitch_with_junctions(Mesh& mesh, double tolerance,
   for (std::size_t j = 0; j < added.size(); ++j) {
     trial.property(junction_of, added[j]) = static_cast<int>(j) + 1;
   }
-  StitchReport report = stitch_matching_edges(trial, tolerance);
+  StitchReport report = stitch_matching_edges(
+      trial, matching_boundary_edges(trial, detail::BoundaryIndex(trial), tolerance), tolerance);
   std::vector<char> left_over(junctions.size(), 0);
   bool any_left_over = false;
   for (const auto v : trial.vertices()) {
@@ -295,7 +341,11 @@ std::optional<StitchReport> stitch_with_junctions(Mesh& mesh, double tolerance,
 
 StitchReport stitch_borders(Mesh& mesh, const StitchOptions& options) {
   const double tolerance = options.tolerance >= 0.0 ? options.tolerance : default_tolerance(mesh);
-  std::vector<detail::TJunction> junctions = detail::find_t_junctions(mesh, tolerance);
+  const detail::BoundaryIndex index(mesh);
+  const Matches matches = matching_boundary_edges(mesh, index, tolerance);
+  // An edge that already has a partner end to end is stitched to it, not split.
+  std::vector<detail::TJunction> junctions =
+      detail::find_t_junctions(mesh, index, tolerance, matches.on_another);
   // A junction whose new vertex could not be merged (its stitch would not be clean) is dropped
   // and the rest tried again; each try drops at least one, and the tries are bounded because
   // each copies the mesh.
@@ -303,7 +353,7 @@ StitchReport stitch_borders(Mesh& mesh, const StitchOptions& options) {
   for (int attempt = 0; attempt < kMaxTries && !junctions.empty(); ++attempt) {
     if (auto report = stitch_with_junctions(mesh, tolerance, junctions)) return *report;
   }
-  return stitch_matching_edges(mesh, tolerance);
+  return stitch_matching_edges(mesh, matches, tolerance);
 }
 
 }  // namespace holefill

@@ -4,7 +4,6 @@
 #include <array>
 #include <tuple>
 
-#include "boundary_points.h"
 #include "holefill/obj_attributes.h"
 
 namespace holefill::detail {
@@ -100,36 +99,14 @@ void set_split_corners(Mesh& mesh, const ObjHandles& obj, VertexHandle a, Vertex
   }
 }
 
-// Whether boundary halfedge a->b already has a partner end to end (a boundary halfedge from a
-// vertex within `tolerance` of b to one within `tolerance` of a): then the stitch joins those two,
-// and a third sheet's vertex on it is not the other side of a crack.
-bool has_partner(const Mesh& mesh, const BoundaryPoints& points, const BoundaryPointTree& tree,
-                 HalfedgeHandle h, double tolerance,
-                 std::vector<std::pair<std::size_t, double>>& found) {
-  const Point &a = mesh.point(mesh.from_vertex_handle(h)),
-              &b = mesh.point(mesh.to_vertex_handle(h));
-  points_near(tree, b, tolerance, found);
-  for (const auto& [index, squared] : found) {
-    const VertexHandle near_b = points.vertices[index];
-    if ((mesh.point(near_b) - b).norm() > tolerance) continue;
-    for (const auto out : mesh.voh_range(near_b)) {
-      if (out != h && mesh.is_boundary(out) &&
-          (mesh.point(mesh.to_vertex_handle(out)) - a).norm() <= tolerance) {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
 }  // namespace
 
-std::vector<TJunction> find_t_junctions(const Mesh& mesh, double tolerance) {
-  const BoundaryPoints points = boundary_points(mesh);
+std::vector<TJunction> find_t_junctions(const Mesh& mesh, const BoundaryIndex& index,
+                                        double tolerance, const std::vector<char>& has_partner) {
+  const BoundaryPoints& points = index.points;
+  const BoundaryPointTree& tree = index.tree;
   std::vector<TJunction> junctions;
   if (points.vertices.empty()) return junctions;
-  BoundaryPointTree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tree.buildIndex();
   std::vector<std::pair<std::size_t, double>> found;
   for (const auto h : mesh.halfedges()) {
     if (!mesh.is_boundary(h)) continue;
@@ -137,6 +114,7 @@ std::vector<TJunction> find_t_junctions(const Mesh& mesh, double tolerance) {
     const Point &a = mesh.point(from), &b = mesh.point(to);
     const double length = (b - a).norm();
     if (!(length > 2.0 * tolerance) || !(length < INFINITY)) continue;
+    if (has_partner[h.idx()]) continue;  // most seams' edges
     points_near(tree, (a + b) * 0.5, 0.5 * length + tolerance, found);
     const std::size_t first = junctions.size();
     for (const auto& [index, squared] : found) {
@@ -150,9 +128,6 @@ std::vector<TJunction> find_t_junctions(const Mesh& mesh, double tolerance) {
       if (runs_back_along(mesh, v, onto.along, a, b, tolerance)) {
         junctions.push_back({h, v, onto.along});
       }
-    }
-    if (junctions.size() > first && has_partner(mesh, points, tree, h, tolerance, found)) {
-      junctions.resize(first);
     }
     std::sort(junctions.begin() + static_cast<std::ptrdiff_t>(first), junctions.end(),
               [](const TJunction& x, const TJunction& y) {
