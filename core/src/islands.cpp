@@ -268,10 +268,11 @@ IslandMap find_islands(const Mesh& mesh, const std::vector<Hole>& holes,
         containers[i].push_back(static_cast<int>(o));
       }
       if (r == Relation::Touching) {
-        const std::string problem = "hole " + std::to_string(i) + " lies inside hole " +
-                                    std::to_string(o) +
-                                    " but touches its boundary (an island touching the outer "
-                                    "loop): a patch between them would be pinched there";
+        const std::string problem =
+            "hole " + std::to_string(i) + " lies inside hole " + std::to_string(o) +
+            " but touches its boundary (an island touching the outer "
+            "loop): a patch between them would be pinched there; with island "
+            "detection off each loop is closed on its own";
         add_problem(map, static_cast<int>(i), problem);
         add_problem(map, static_cast<int>(o), problem);
       }

@@ -254,6 +254,14 @@ TEST(Bridge, RefusesAnIslandTouchingItsHole) {
   HoleSelection selection;
   selection.hole_ids = {hole_near(holes, Point(0.5, 0.5, 0)), hole_near(holes, Point(0.4, 0.5, 0))};
   expect_refused(before, selection, "touches its boundary");
+  // As the refusal says, with island detection off each loop is closed on its own.
+  expect_refused(before, selection, "with island detection off each loop is closed on its own");
+  FillOptions off;
+  off.islands.detect = false;
+  Mesh after = before;
+  for (const auto& fill : fill_holes(after, holes, off, selection)) {
+    EXPECT_FALSE(fill.failed()) << fill.failure;
+  }
 }
 
 TEST(Bridge, RefusesAnIslandOfTwoHoles) {
