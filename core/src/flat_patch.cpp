@@ -218,7 +218,10 @@ void FlatPatch::flip(int edge) {
   if (vertex_halfedge_[vb0] == global_halfedge(a0)) vertex_halfedge_[vb0] = global_halfedge(b1);
   untested_.set(fa);
   untested_.set(fb);
-  for (const int h : {a0, a1, a2, b1, b2}) unsettle_edge(h >> 1);
+  for (const int h : {a1, a2, b1, b2}) unsettle_edge(h >> 1);
+  // The new edge's opposite angles are the old edge's swapped ones and the other way round (the
+  // same atan2 of the same vectors), so the swap that made it says it would not swap back.
+  edge_settled_[edge] = 1;
 }
 
 std::size_t FlatPatch::relax(int max_sweeps) {
