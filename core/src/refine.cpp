@@ -52,7 +52,8 @@ Stop limit_reached(const detail::FlatPatch& flat, std::size_t vertices_before,
 }
 
 // One round: every face that was there when it began, in order, split where too coarse, until a
-// limit stops it. The limits are asked before each face, as they change only with a split.
+// limit stops it. The limits hold before a face when they held before the round or after the
+// last split (nothing else changes them), so they are asked then, while faces remain.
 Stop refine_round(detail::FlatPatch& flat, std::size_t vertices_before,
                   const RefineOptions& options, RefineResult& result, std::size_t& splits) {
   const int faces_now = flat.face_count();  // faces split off in this round wait for the next
@@ -65,8 +66,9 @@ Stop refine_round(detail::FlatPatch& flat, std::size_t vertices_before,
       continue;
     }
     ++splits;
-    if (face + 1 < faces_now)
+    if (face + 1 < faces_now) {
       stop = limit_reached(flat, vertices_before, options, result.vertex_cap);
+    }
   }
   return stop;
 }

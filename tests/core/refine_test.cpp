@@ -399,5 +399,19 @@ TEST(Refine, FlatArraysRefuseSwapsOnAPillow) {
   EXPECT_EQ(first_difference(expected, actual), "");
 }
 
+// A patch that lists a face twice is refused before anything is added.
+TEST(Refine, PatchListingAFaceTwiceIsRefused) {
+  const auto triangulated = triangulate_holes(blob_with_wavy_hole(2));
+  ASSERT_FALSE(triangulated.fills.empty());
+  Mesh mesh = triangulated.mesh;
+  Patch patch = triangulated.fills[0].patch;
+  patch.faces.push_back(patch.faces.front());
+  const std::size_t faces = mesh.n_faces(), vertices = mesh.n_vertices();
+  EXPECT_THROW(refine_patch(mesh, patch), std::logic_error);
+  EXPECT_THROW(relax_patch_edges(mesh, patch), std::logic_error);
+  EXPECT_EQ(mesh.n_faces(), faces);
+  EXPECT_EQ(mesh.n_vertices(), vertices);
+}
+
 }  // namespace
 }  // namespace holefill

@@ -45,10 +45,13 @@ void assign_boundary_scales(Mesh& mesh, const Patch& patch);
 
 // Refines the patch in place: adds vertices and faces (tagged Stage::Refined) and records them
 // in `patch`. Vertices and faces outside the patch are never changed; patch.stage is left to the
-// pipeline (fill.h).
+// pipeline (fill.h). The splits and swaps run on a copy of the patch, written into the mesh at
+// the end; std::logic_error (no element added) if patch.faces lists a face twice, which no
+// stage does.
 RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options = {});
 
-// Swaps interior patch edges until none should be swapped; returns the number of swaps.
+// Swaps interior patch edges until none should be swapped; returns the number of swaps. Throws
+// std::logic_error, as refine_patch, if patch.faces lists a face twice.
 std::size_t relax_patch_edges(Mesh& mesh, const Patch& patch);
 
 // Refinement's relaxation test: true when the edge's two opposite angles sum to more than pi
