@@ -139,22 +139,27 @@ HalfedgeNumbers halfedge_numbers(const std::vector<Triangle>& triangles,
   return numbers;
 }
 
-// Adds the triangles' faces by building their half-edges directly: linear in the triangles,
-// where add_face circulates around each corner (quadratic around a vertex with many fans).
+// Gives the mesh, whose vertices are made, the triangles' faces by building their half-edges
+// directly: linear in the triangles, where add_face circulates around each corner (quadratic
+// around a vertex with many fans). The edges and faces are made at once (as many new_edge and
+// new_face calls would make them, each growing every property by one).
 // Preconditions (what the repairs guarantee): every edge is used at most twice, in opposite
 // directions, and a vertex has either one closed fan or only open ones.
 void add_triangles(Mesh& mesh, const std::vector<Triangle>& triangles,
                    const HalfedgeNumbers& numbers) {
-  for (const int corner : numbers.edge_corner) {
-    const Triangle& t = triangles[corner / 3];
-    const int c = corner % 3;
-    mesh.new_edge(VertexHandle(t[c]), VertexHandle(t[(c + 1) % 3]));
+  mesh.resize(mesh.n_vertices(), numbers.edge_corner.size(), triangles.size());
+  for (std::size_t e = 0; e < numbers.edge_corner.size(); ++e) {
+    const Triangle& t = triangles[numbers.edge_corner[e] / 3];
+    const int c = numbers.edge_corner[e] % 3;
+    const auto h = static_cast<int>(2 * e);
+    mesh.set_vertex_handle(HalfedgeHandle(h), VertexHandle(t[(c + 1) % 3]));
+    mesh.set_vertex_handle(HalfedgeHandle(h + 1), VertexHandle(t[c]));
   }
   auto halfedge = [&numbers](std::size_t corner) {
     return HalfedgeHandle(numbers.of_corner[corner]);
   };
   for (std::size_t t = 0; t < triangles.size(); ++t) {
-    const FaceHandle f = mesh.new_face();
+    const FaceHandle f(static_cast<int>(t));
     // As add_face does: the face circulators start at corner 0.
     mesh.set_halfedge_handle(f, halfedge(3 * t + 2));
     for (int c = 0; c < 3; ++c) {
@@ -224,7 +229,10 @@ Mesh assemble(std::vector<Point> positions, const std::vector<Triangle>& triangl
   Mesh mesh;
   mesh.reserve(with_room(positions.size()), with_room(numbers.edge_corner.size()),
                with_room(kept.size()));
-  for (const auto& p : positions) mesh.add_vertex(p);
+  mesh.resize(positions.size(), 0, 0);
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    mesh.set_point(VertexHandle(static_cast<int>(v)), positions[v]);
+  }
   std::vector<Point>().swap(positions);
   add_triangles(mesh, kept, numbers);
   for (std::size_t v = 0; v < original_vertices; ++v) {
