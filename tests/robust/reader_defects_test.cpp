@@ -15,16 +15,6 @@ namespace holefill::testing {
 namespace {
 namespace fs = std::filesystem;
 
-// The reason load_mesh_from_memory refuses `bytes` with, or "" when it reads them.
-std::string refusal(const std::string& bytes, const std::string& name) {
-  try {
-    load_mesh_from_memory(bytes, name);
-  } catch (const FileError& e) {
-    return e.reason();
-  }
-  return "";
-}
-
 bool has_warning(const LoadReport& report, const std::string& part) {
   for (const auto& warning : report.warnings) {
     if (warning.find(part) != std::string::npos) return true;

@@ -47,6 +47,16 @@ inline std::string obj_text(const std::vector<Point>& points,
 
 inline std::string obj_text(const Soup& soup) { return obj_text(soup.points, soup.faces); }
 
+// The reason load_mesh_from_memory refuses `bytes` with, or "" when it reads them.
+inline std::string refusal(const std::string& bytes, const std::string& name) {
+  try {
+    load_mesh_from_memory(bytes, name);
+  } catch (const FileError& e) {
+    return e.reason();
+  }
+  return "";
+}
+
 class ScratchTest : public ::testing::Test {
  protected:
   void SetUp() override {

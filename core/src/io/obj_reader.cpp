@@ -79,6 +79,33 @@ constexpr IndexKind kTexcoordIndex{"texture coordinate", "texture coordinates",
                                    "has no valid texture coordinate index"};
 constexpr IndexKind kNormalIndex{"normal", "normals", "has no valid normal index"};
 
+// How many of a face's corners have a texture coordinate, a normal.
+struct CornerCounts {
+  std::size_t texcoords = 0, normals = 0;
+};
+
+// A corner "v", "v/vt", "v//vn", "v/vt/vn" (or "v/", "v//", "v/vt/") at the start of `text`,
+// up to a blank or the end.
+struct PlainCorner {
+  long long index[3] = {0, 0, 0};  // vertex, texture coordinate, normal
+  bool given[3] = {true, false, false};
+};
+
+// Reads such a corner and removes it from `text`; false when `text` does not start with one.
+// Split as read_face splits a corner: the vertex before the first slash, the texture coordinate
+// up to the second.
+bool take_plain_corner(std::string_view& text, PlainCorner& corner) {
+  if (!take_integer_prefix(text, corner.index[0])) return false;
+  for (int part = 1; part < 3 && !at_token_end(text); ++part) {
+    if (text.front() != '/') return false;
+    text.remove_prefix(1);
+    if (at_token_end(text) || text.front() == '/') continue;  // this part is left out
+    if (!take_integer_prefix(text, corner.index[part])) return false;
+    corner.given[part] = true;
+  }
+  return at_token_end(text);
+}
+
 class ObjReading {
  public:
   ObjReading(const ObjStatements& statements, const fs::path& path)
@@ -99,9 +126,8 @@ class ObjReading {
   }
   // "s 1", "s off", "s 0": kept as written (a number, any size, or off) for the faces that follow.
   void read_smoothing_group() {
-    std::string_view rest = statements_.statement();
-    take_token(rest);
-    smoothing_ = number_of(trimmed(rest), soup.obj.smoothing_groups, smoothing_numbers_);
+    smoothing_ =
+        number_of(trimmed(statements_.arguments()), soup.obj.smoothing_groups, smoothing_numbers_);
   }
   // Checks the indices against what the file defines and moves them into the soup.
   void finish(LoadReport& report);
@@ -117,6 +143,13 @@ class ObjReading {
   int read_numbers(double* values, int least, int most, const char* what) const;
   long long read_index(std::string_view text, std::string_view corner, std::size_t defined,
                        const IndexKind& kind) const;
+  // A read index's 0-based value; refuses 0 and relative indices before the first element.
+  long long resolve_index(long long index, std::size_t defined, const IndexKind& kind) const;
+  // A face's corners, pushed onto vertex_, texcoord_ and normal_.
+  void read_corners(std::string_view rest, CornerCounts& given);
+  // The same for the usual corners, read in place; false (some corners pushed) at the first
+  // that is not one (then read_corners tells what is wrong with it).
+  bool read_plain_corners(std::string_view rest, CornerCounts& given);
   void read_vertex_colour(std::string_view rest);
   void check_indices(const std::vector<long long>& indices, std::size_t defined,
                      const IndexKind& kind) const;
@@ -134,17 +167,15 @@ class ObjReading {
 };
 
 int ObjReading::read_numbers(double* values, int least, int most, const char* what) const {
-  std::string_view rest = statements_.statement();
-  take_token(rest);  // the keyword
+  std::string_view rest = statements_.arguments();
   int count = 0;
   for (; count < most; ++count) {
-    const std::string_view token = take_token(rest);
-    if (token.empty() && count >= least) break;
-    if (!parse_double(token, values[count])) {
-      if (count >= least) break;
-      fail_here(std::string(what) + " needs " + std::to_string(least) + " numbers" +
-                (token.empty() ? std::string() : ", got " + quoted(token)));
-    }
+    std::string_view unread = rest;
+    if (take_double(rest, values[count])) continue;
+    if (count >= least) break;
+    const std::string_view token = take_token(unread);
+    fail_here(std::string(what) + " needs " + std::to_string(least) + " numbers" +
+              (token.empty() ? std::string() : ", got " + quoted(token)));
   }
   for (int i = 0; i < count; ++i) {
     if (!std::isfinite(values[i])) fail_here(std::string(what) + " has a non-finite value");
@@ -154,11 +185,11 @@ int ObjReading::read_numbers(double* values, int least, int most, const char* wh
 
 void ObjReading::read_vertex() {
   double xyz[3];
-  std::string_view rest = statements_.statement();
-  take_token(rest);
+  std::string_view rest = statements_.arguments();
   for (double& value : xyz) {
-    const std::string_view token = take_token(rest);
-    if (!parse_double(token, value)) {
+    std::string_view unread = rest;
+    if (!take_double(rest, value)) {
+      const std::string_view token = take_token(unread);
       fail_here("vertex needs 3 numbers" +
                 (token.empty() ? std::string() : ", got " + quoted(token)));
     }
@@ -177,7 +208,7 @@ void ObjReading::read_vertex() {
 void ObjReading::read_vertex_colour(std::string_view rest) {
   double rgb[3];
   for (double& channel : rgb) {
-    if (!parse_double(take_token(rest), channel)) return;
+    if (!take_double(rest, channel)) return;
   }
   if (soup.layout.vertex.empty()) {
     for (const char* name : {"red", "green", "blue"}) soup.layout.vertex.push_back({name});
@@ -209,6 +240,11 @@ long long ObjReading::read_index(std::string_view text, std::string_view corner,
   if (!parse_integer(text, index)) {
     fail_here("face corner " + quoted(corner) + " " + kind.syntax_error);
   }
+  return resolve_index(index, defined, kind);
+}
+
+long long ObjReading::resolve_index(long long index, std::size_t defined,
+                                    const IndexKind& kind) const {
   if (index == 0) fail_here(std::string(kind.name) + " index 0 (OBJ counts from 1)");
   if (index > 0) return index - 1;
   // Relative: -1 is the last element defined so far.
@@ -219,11 +255,25 @@ long long ObjReading::read_index(std::string_view text, std::string_view corner,
   return index + static_cast<long long>(defined);
 }
 
-void ObjReading::read_face() {
-  std::string_view rest = statements_.statement();
-  take_token(rest);
-  const std::size_t first = vertex_.size();
-  std::size_t texcoords = 0, normals = 0;
+bool ObjReading::read_plain_corners(std::string_view rest, CornerCounts& given) {
+  for (skip_blanks(rest); !rest.empty(); skip_blanks(rest)) {
+    PlainCorner corner;
+    if (!take_plain_corner(rest, corner)) return false;
+    // Resolved in read_index's order, so that a bad index fails as there.
+    vertex_.push_back(resolve_index(corner.index[0], soup.positions.size(), kVertexIndex));
+    texcoord_.push_back(
+        corner.given[1] ? resolve_index(corner.index[1], soup.obj.texcoords.size(), kTexcoordIndex)
+                        : -1);
+    normal_.push_back(corner.given[2]
+                          ? resolve_index(corner.index[2], soup.obj.normals.size(), kNormalIndex)
+                          : -1);
+    given.texcoords += corner.given[1] ? 1 : 0;
+    given.normals += corner.given[2] ? 1 : 0;
+  }
+  return true;
+}
+
+void ObjReading::read_corners(std::string_view rest, CornerCounts& given) {
   for (std::string_view corner = take_token(rest); !corner.empty(); corner = take_token(rest)) {
     // "v", "v/vt", "v//vn" or "v/vt/vn".
     const std::size_t slash = corner.find('/');
@@ -239,9 +289,21 @@ void ObjReading::read_face() {
         vt.empty() ? -1 : read_index(vt, corner, soup.obj.texcoords.size(), kTexcoordIndex));
     normal_.push_back(vn.empty() ? -1
                                  : read_index(vn, corner, soup.obj.normals.size(), kNormalIndex));
-    texcoords += vt.empty() ? 0 : 1;
-    normals += vn.empty() ? 0 : 1;
+    given.texcoords += vt.empty() ? 0 : 1;
+    given.normals += vn.empty() ? 0 : 1;
   }
+}
+
+void ObjReading::read_face() {
+  const std::size_t first = vertex_.size();
+  CornerCounts given;
+  if (!read_plain_corners(statements_.arguments(), given)) {
+    // Read again from the first corner, the way that names what is wrong.
+    for (auto* indices : {&vertex_, &texcoord_, &normal_}) indices->resize(first);
+    given = CornerCounts();
+    read_corners(statements_.arguments(), given);
+  }
+  const std::size_t texcoords = given.texcoords, normals = given.normals;
   const std::size_t corners = vertex_.size() - first;
   // A face gives every corner a texture coordinate (a normal), or none.
   auto all_or_none = [&](std::vector<long long>& values, std::size_t given, std::size_t& partial) {

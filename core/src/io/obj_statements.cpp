@@ -61,13 +61,20 @@ bool ObjStatements::next_statement() {
     const std::string_view keyword = take_token(rest);
     if (keyword.empty()) continue;
     classify(keyword);
-    std::string_view corners = rest;
-    if ((keyword == "f" || keyword == "fo") && take_token(corners).empty()) ++empty_faces_;
+    keyword_ = keyword;
+    arguments_ = rest;
+    if (keyword == "f" || keyword == "fo") {
+      std::string_view corners = rest;
+      skip_blanks(corners);
+      if (corners.empty()) ++empty_faces_;
+    }
     if (keyword == "fo") {                     // served as "f" so that tinyobjloader sees a face
       std::string face(rest.size() + 1, 'f');  // `rest` may lie in joined_: built apart first
       std::copy(rest.begin(), rest.end(), face.begin() + 1);
       joined_ = std::move(face);
       statement_ = joined_;
+      keyword_ = statement_.substr(0, 1);
+      arguments_ = statement_.substr(1);
     }
     return true;
   }
@@ -75,16 +82,15 @@ bool ObjStatements::next_statement() {
 }
 
 std::string_view ObjStatements::direct_keyword() const {
-  const std::size_t start = statement_.find_first_not_of(" \t");
-  if (start == std::string_view::npos) return {};
-  std::size_t end = start;
-  while (end < statement_.size() && !is_blank(statement_[end])) ++end;
-  if (end < statement_.size() && statement_[end] != ' ' && statement_[end] != '\t') return {};
-  const std::string_view keyword = statement_.substr(start, end - start);
-  if (keyword == "v" || keyword == "vt" || keyword == "vn" || keyword == "s") return keyword;
+  // tinyobjloader splits the keyword off at spaces and tabs only.
+  auto space_or_tab = [](char c) { return c == ' ' || c == '\t'; };
+  const std::string_view before = statement_.substr(0, keyword_.data() - statement_.data());
+  if (!std::all_of(before.begin(), before.end(), space_or_tab)) return {};
+  if (!arguments_.empty() && !space_or_tab(arguments_.front())) return {};
+  if (keyword_ == "v" || keyword_ == "vt" || keyword_ == "vn" || keyword_ == "s") return keyword_;
   // tinyobjloader reports a face only when something follows its keyword.
-  if (keyword == "f" && statement_.find_first_not_of(" \t", end) != std::string_view::npos) {
-    return keyword;
+  if (keyword_ == "f" && arguments_.find_first_not_of(" \t") != std::string_view::npos) {
+    return keyword_;
   }
   return {};
 }

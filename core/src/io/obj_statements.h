@@ -27,6 +27,8 @@ class ObjStatements : public std::streambuf {
 
   // The statement being read (no comment, no end of line) and the line it starts on.
   std::string_view statement() const { return statement_; }
+  // The statement after its keyword (what take_token leaves of it; "fo" counts as "f").
+  std::string_view arguments() const { return arguments_; }
   std::size_t line() const { return line_; }
 
   // Lines, points, curves and surfaces (not surfaces holefill fills), and the keywords of other
@@ -57,13 +59,15 @@ class ObjStatements : public std::streambuf {
   bool next_statement();
   void classify(std::string_view keyword);
   // The statement's keyword when tinyobjloader would take it for one that read_directly covers
-  // (after spaces and tabs only, followed by one or by the end), else empty.
+  // (after spaces and tabs only, followed by one or by the end), else empty. Uses the keyword
+  // next_statement found instead of scanning the statement again.
   std::string_view direct_keyword() const;
 
   Lines lines_;
   std::string joined_;  // a statement continued over several lines
   std::string served_;  // what tinyobjloader reads: the statement and '\n'
   std::string_view statement_;
+  std::string_view keyword_, arguments_;  // parts of statement_
   std::size_t line_ = 0;
   std::size_t elements_ignored_ = 0;
   std::size_t empty_faces_ = 0;

@@ -135,10 +135,12 @@ void plan_off_attributes(const OffCounts& counts, std::string_view first_vertex_
 void read_columns(std::string_view rest, std::vector<std::vector<double>>& columns,
                   std::size_t line, const fs::path& path) {
   for (auto& column : columns) {
-    const std::string_view token = take_token(rest);
+    std::string_view unread = rest;
     double value = 0.0;
-    if (!token.empty() && !parse_double(token, value)) {
-      fail(path, at_line(line) + "expected a number, got " + quoted(token));
+    if (!take_double(rest, value)) {
+      const std::string_view token = take_token(unread);
+      if (!token.empty()) fail(path, at_line(line) + "expected a number, got " + quoted(token));
+      value = 0.0;
     }
     column.push_back(value);
   }
@@ -173,8 +175,9 @@ Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report) 
     if (v == 0) plan_off_attributes(counts, line, soup);
     Point p;
     for (int axis = 0; axis < 3; ++axis) {
-      const std::string_view token = take_token(line);
-      if (!parse_double(token, p[axis])) {
+      std::string_view unread = line;
+      if (!take_double(line, p[axis])) {
+        const std::string_view token = take_token(unread);
         fail(path, at_line(lines.number()) + "vertex needs 3 numbers" +
                        (token.empty() ? std::string() : ", got " + quoted(token)));
       }
@@ -190,15 +193,16 @@ Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report) 
                      " faces (truncated?)");
     }
     long long corner_count = 0;
-    const std::string_view count_token = take_token(line);
-    if (!parse_integer(count_token, corner_count) || corner_count < 0) {
+    std::string_view unread = line;
+    if (!take_integer(line, corner_count) || corner_count < 0) {
       fail(path, at_line(lines.number()) + "a face must start with its number of corners, got " +
-                     quoted(count_token));
+                     quoted(take_token(unread)));
     }
     for (long long c = 0; c < corner_count; ++c) {
-      const std::string_view token = take_token(line);
+      unread = line;
       long long index = 0;
-      if (!parse_integer(token, index)) {
+      if (!take_integer(line, index)) {
+        const std::string_view token = take_token(unread);
         fail(path, at_line(lines.number()) + "face needs " + std::to_string(corner_count) +
                        " vertex indices" +
                        (token.empty() ? std::string() : ", got " + quoted(token)));

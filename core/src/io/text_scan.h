@@ -23,6 +23,9 @@ inline bool is_blank(char c) {
 
 void skip_blanks(std::string_view& text);
 
+// `text` is at its end or at a blank: a number read in place was a whole token.
+inline bool at_token_end(std::string_view text) { return text.empty() || is_blank(text.front()); }
+
 // The next blank-separated token of `text` (empty at its end), removed from `text`.
 std::string_view take_token(std::string_view& text);
 
@@ -32,6 +35,18 @@ bool parse_double(std::string_view token, double& value);
 
 // The whole token is a whole number that fits a long long.
 bool parse_integer(std::string_view token, long long& value);
+
+// Exactly `parse_double(take_token(text), value)`, but a number followed by a blank or the end
+// is read in place, without finding the token's end first (from_chars finds it).
+bool take_double(std::string_view& text, double& value);
+
+// Exactly `parse_integer(take_token(text), value)`, reading in place as take_double does.
+bool take_integer(std::string_view& text, long long& value);
+
+// Reads the whole number that `text` starts with (no blanks first; an optional '+' as
+// parse_integer takes it) and removes it; false, with `text` unchanged, when there is none or it
+// does not fit a long long. What follows is left for the caller to check.
+bool take_integer_prefix(std::string_view& text, long long& value);
 
 // Lines of a text, without their end-of-line characters, counted from 1.
 class Lines {
@@ -47,6 +62,9 @@ class Lines {
   std::string_view text_;
   std::size_t position_ = 0;
   std::size_t number_ = 0;
+  // The first '\n' at or after position_ (text_.size() when none): found once per LF, so a
+  // file of lone CRs is not searched to its end at every line.
+  std::size_t next_newline_ = 0;
 };
 
 // Text formats must not hold NUL bytes: a binary file with a text format's extension is refused,
