@@ -5,7 +5,10 @@ namespace {
 
 // attributes.h's values: each vertex its source position's, each face its source polygon's.
 void copy_layout_values(const Soup& soup, const SoupOrigins& origins, Mesh& mesh) {
-  if (soup.layout.empty()) return;
+  if (soup.layout.empty()) {
+    keep_file_format(soup, mesh);
+    return;
+  }
   set_attribute_layout(mesh, soup.layout);
   for (std::size_t a = 0; a < soup.layout.vertex.size(); ++a) {
     const auto property = vertex_attribute(mesh, soup.layout.vertex[a].name);
@@ -61,6 +64,16 @@ void copy_obj_values(const Soup& soup, const SoupOrigins& origins, Mesh& mesh) {
 }
 
 }  // namespace
+
+void keep_file_format(const Soup& soup, Mesh& mesh) {
+  const AttributeLayout plain;  // ASCII, double positions, uchar counts, int indices
+  const AttributeLayout& file = soup.layout;
+  if (file.encoding != plain.encoding || file.position_type != plain.position_type ||
+      file.face_count_type != plain.face_count_type ||
+      file.face_index_type != plain.face_index_type) {
+    set_attribute_layout(mesh, file);
+  }
+}
 
 bool has_corner_values(const Soup& soup) {
   return !soup.corner_texcoord.empty() || !soup.corner_normal.empty();

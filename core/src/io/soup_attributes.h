@@ -26,7 +26,13 @@ bool has_corner_values(const Soup& soup);
 // Whether the soup carries anything copy_soup_attributes would copy.
 bool has_attributes(const Soup& soup);
 
-// Copies the soup's attributes to the mesh's elements (nothing when it carries none).
+// Records on the mesh how the file stored positions and faces (a PLY's encoding and types),
+// when that differs from what a PLY is written as by default, so that a PLY with no other
+// properties is written back as it was read (binary stays binary, floats stay floats).
+void keep_file_format(const Soup& soup, Mesh& mesh);
+
+// Copies the soup's attributes to the mesh's elements (nothing when it carries none; the file's
+// format as keep_file_format).
 void copy_soup_attributes(const Soup& soup, const SoupOrigins& origins, Mesh& mesh);
 
 }  // namespace holefill::io
