@@ -24,10 +24,6 @@ std::string quoted(std::string_view text) {
   return shown + "'";
 }
 
-void skip_blanks(std::string_view& text) {
-  while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
-}
-
 std::string_view take_token(std::string_view& text) {
   skip_blanks(text);
   std::size_t length = 0;

@@ -21,7 +21,10 @@ inline bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
 }
 
-void skip_blanks(std::string_view& text);
+// Inline: called before every number (about a twentieth of reading an OBJ when it was not).
+inline void skip_blanks(std::string_view& text) {
+  while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
+}
 
 // `text` is at its end or at a blank: a number read in place was a whole token.
 inline bool at_token_end(std::string_view text) { return text.empty() || is_blank(text.front()); }
