@@ -5,10 +5,7 @@ namespace {
 
 // attributes.h's values: each vertex its source position's, each face its source polygon's.
 void copy_layout_values(const Soup& soup, const SoupOrigins& origins, Mesh& mesh) {
-  if (soup.layout.empty()) {
-    keep_file_format(soup, mesh);
-    return;
-  }
+  if (soup.layout.empty()) return;
   set_attribute_layout(mesh, soup.layout);
   for (std::size_t a = 0; a < soup.layout.vertex.size(); ++a) {
     const auto property = vertex_attribute(mesh, soup.layout.vertex[a].name);

@@ -31,8 +31,7 @@ bool has_attributes(const Soup& soup);
 // properties is written back as it was read (binary stays binary, floats stay floats).
 void keep_file_format(const Soup& soup, Mesh& mesh);
 
-// Copies the soup's attributes to the mesh's elements (nothing when it carries none; the file's
-// format as keep_file_format).
+// Copies the soup's attributes to the mesh's elements (nothing when it carries none).
 void copy_soup_attributes(const Soup& soup, const SoupOrigins& origins, Mesh& mesh);
 
 }  // namespace holefill::io

@@ -391,10 +391,8 @@ Mesh build_mesh(Soup soup, LoadReport& report) {
   MeshSources sources;
   Mesh mesh = assemble(std::move(positions), triangles, detached, original_vertices, report,
                        sources, std::move(uses));
-  if (!has_attributes(soup)) {
-    keep_file_format(soup, mesh);
-    return mesh;
-  }
+  keep_file_format(soup, mesh);
+  if (!has_attributes(soup)) return mesh;
   SoupOrigins origins;
   origins.vertex.reserve(sources.vertex.size());
   for (const int v : sources.vertex) origins.vertex.push_back(origin[v]);
