@@ -27,9 +27,9 @@ struct SmallestAngle {
   bool degenerate = true;
   double dot = 0.0;
 };
-inline SmallestAngle smallest_angle(const Point& a, const Point& b, const Point& c,
-                                    double twice_area) {
-  const Point ab = b - a, ac = c - a, bc = c - b;
+// The edges ab = b - a and ac = c - a are passed in where the caller has them already.
+inline SmallestAngle smallest_angle_of_edges(const Point& ab, const Point& ac, const Point& bc,
+                                             double twice_area) {
   const double ab2 = ab.sqrnorm(), ac2 = ac.sqrnorm(), bc2 = bc.sqrnorm();
   const double longest = std::max({ab2, ac2, bc2});
   // sin(smallest angle) >= twice_area / longest^2 (up to a factor): a scale-free test, written so
@@ -40,6 +40,10 @@ inline SmallestAngle smallest_angle(const Point& a, const Point& b, const Point&
                      : ac2 <= ab2             ? -OpenMesh::dot(ab, bc)
                                               : OpenMesh::dot(ac, bc);
   return {false, dot};
+}
+inline SmallestAngle smallest_angle(const Point& a, const Point& b, const Point& c,
+                                    double twice_area) {
+  return smallest_angle_of_edges(b - a, c - a, c - b, twice_area);
 }
 
 // The chords below stand for angles only between unit normals, as HolePolygon asks, and
@@ -66,12 +70,13 @@ inline bool is_forbidden_triangle(const HolePolygon& polygon, int i, int m, int 
   return !list.empty() && std::binary_search(list.begin(), list.end(), std::array<int, 3>{i, m, k});
 }
 
-// The chord |normal - other| standing for the dihedral angle against what lies across an edge:
+// The chord |normal - other| standing for the dihedral angle against what lies across an edge,
+// squared (the largest of several chords is the root of the largest square, one root for all):
 // nothing known there (zero) adds nothing, no orientation of our own (zero) is the worst fold.
-inline double chord_against(const Point& normal, const Point& other) {
+inline double squared_chord_against(const Point& normal, const Point& other) {
   if (is_zero(other)) return 0.0;
-  if (is_zero(normal)) return 2.0;
-  return (normal - other).norm();
+  if (is_zero(normal)) return 4.0;
+  return (normal - other).sqrnorm();
 }
 
 // The best apex found so far for one cell. `value` starts just below kInfeasible, so that any
@@ -98,14 +103,15 @@ struct SideValue {
 
 // The expensive part of trying triangle (i, m, k) (its smallest angle and dihedral angles), once
 // the cheap tests of try_apex have passed; out of line, to keep the apex loop small.
+// `to_m` and `to_k` are the edges from point i, `cross` their cross product, `twice_area` its norm.
 template <bool kPrune, class Weight, class NormalAcross>
 [[gnu::noinline]] void finish_apex(const Weight& weight, const HolePolygon& polygon, int i, int m,
-                                   int k, std::uint64_t key, double area, const Point& cross,
+                                   int k, std::uint64_t key, double area, const Point& to_m,
+                                   const Point& to_k, const Point& cross, double twice_area,
                                    const NormalAcross& normal_across, CellBest& best) {
   if (is_forbidden_triangle(polygon, i, m, k)) return;
-  const double twice_area = cross.norm();
   const SmallestAngle angle =
-      smallest_angle(polygon.points[i], polygon.points[m], polygon.points[k], twice_area);
+      smallest_angle_of_edges(to_m, to_k, polygon.points[k] - polygon.points[m], twice_area);
   if (angle.degenerate) {
     key = weight.combine(
         key, (std::uint64_t{1} << weight_key::kDegenerateShift) | weight.angle_key(0.0));
@@ -117,13 +123,14 @@ template <bool kPrune, class Weight, class NormalAcross>
   if constexpr (Weight::kUsesDihedral) {
     if (kPrune && best.excludes(key, area, m)) return;
     const Point normal = twice_area > 0.0 ? cross / twice_area : Point(0.0, 0.0, 0.0);
-    double chord = std::max(chord_against(normal, normal_across(i, m)),
-                            chord_against(normal, normal_across(m, k)));
+    double squared_chord = std::max(squared_chord_against(normal, normal_across(i, m)),
+                                    squared_chord_against(normal, normal_across(m, k)));
     const int n = static_cast<int>(polygon.points.size());
     if (i == 0 && k == n - 1) {
-      chord = std::max(chord, chord_against(normal, polygon.outside_normals[n - 1]));
+      squared_chord =
+          std::max(squared_chord, squared_chord_against(normal, polygon.outside_normals[n - 1]));
     }
-    key = weight.combine(key, weight.dihedral_key(chord));
+    key = weight.combine(key, weight.dihedral_key(std::sqrt(squared_chord)));
   }
   if (!best.excludes(key, area, m)) {
     best.value = {key, area};
@@ -146,14 +153,16 @@ template <bool kPrune, class Weight, class NormalAcross>
   const double sides_lower_bound = left.area + right.area_lower_bound;
   if (kPrune && best.excludes(key, sides_lower_bound, m)) return;
   const Point& a = polygon.points[i];
-  const Point cross = OpenMesh::cross(polygon.points[m] - a, polygon.points[k] - a);
+  const Point to_m = polygon.points[m] - a, to_k = polygon.points[k] - a;
+  const Point cross = OpenMesh::cross(to_m, to_k);
   // An overflowing cross product (NaN or inf) weighs as an infinite area, so areas always compare.
   const double norm = cross.norm();
   const double half_area = norm < INFINITY ? 0.5 * norm : INFINITY;
   if (kPrune && best.excludes(key, sides_lower_bound + half_area, m)) return;
   const double area = (left.area + *right.area) + half_area;
   if (kPrune && best.excludes(key, area, m)) return;
-  finish_apex<kPrune>(weight, polygon, i, m, k, key, area, cross, normal_across, best);
+  finish_apex<kPrune>(weight, polygon, i, m, k, key, area, to_m, to_k, cross, norm, normal_across,
+                      best);
 }
 
 // Whether the caller has asked the search to stop (TriangulateOptions::progress).

@@ -156,10 +156,13 @@ class RowSolver {
       for (int m = i + 1; m < k; ++m) try_apex(i, m, k, sides, best);
       return best;
     }
-    // The apex of the cell below is often this cell's best too: tried first, it lets the bound
+    // The apexes of the cells below and to the left are often this cell's best too (each in
+    // about a third of the cells, not always the same third): tried first, they let the bound
     // discard most other apexes at once.
     const int seed = k - i > 2 ? t_.apex[t_.row_index(i + 1, k)] : kNoApex;
     if (seed != kNoApex) try_apex(i, seed, k, sides, best);
+    const int seed2 = k - i > 2 ? t_.apex[t_.row_index(i, k - 1)] : kNoApex;
+    if (seed2 != kNoApex && seed2 != seed) try_apex(i, seed2, k, sides, best);
     const std::uint64_t* left_key = t_.row_key.data() + (sides.left + (i + 1));  // from m = i + 1
     const std::uint64_t* right_key = t_.column_key.data() + sides.right;         // (m, k) at [m]
     for (int m = i + 1; m < k; ++m) {
@@ -169,7 +172,7 @@ class RowSolver {
                                      best.value.key);
         if (m >= k) break;
       }
-      if (m != seed) try_apex(i, m, k, sides, best);
+      if (m != seed && m != seed2) try_apex(i, m, k, sides, best);
     }
     return best;
   }
