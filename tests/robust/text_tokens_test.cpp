@@ -3,8 +3,15 @@
 // anything else is refused, quoted as before), '+' signs are taken but not "+-", every corner
 // spelling reads as the slow path splits it, and lines end at LF, CR LF or a lone CR in any mix.
 // The expected messages are those of the readers before the fast paths.
+#include <bit>
+#include <charconv>
+#include <cstdio>
+#include <limits>
+#include <random>
 #include <string>
+#include <vector>
 
+#include "io/text_scan.h"
 #include "robust_test_util.h"
 
 namespace holefill::testing {
@@ -67,6 +74,94 @@ TEST(TextTokens, OffNumbersFollowedByOtherCharactersAreRefusedAsBefore) {
             "line 3: vertex needs 3 numbers, got '0x'");
   EXPECT_EQ(refusal("COFF\n3 1 0\n0 0 0 1 2 3\n1 0 0 1 2 3x\n0 1 0\n3 0 1 2\n", "t.off"),
             "line 4: expected a number, got '3x'");
+}
+
+// Numbers in the spellings exporters use and at the edges of the in-place fast paths (53-bit
+// mantissas, powers of ten up to 22, 18-digit integers): take_double and take_integer_prefix give
+// what from_chars gives on the whole token, bit for bit, and stop where it stops.
+std::vector<std::string> number_spellings() {
+  std::mt19937_64 random(7);
+  std::vector<std::string> spellings = {"0",
+                                        "-0",
+                                        "0.0",
+                                        "-0.0",
+                                        ".5",
+                                        "5.",
+                                        "-.5",
+                                        "1e22",
+                                        "1e23",
+                                        "1e-22",
+                                        "1e-23",
+                                        "9007199254740992",
+                                        "9007199254740993",
+                                        "-9007199254740993e-5",
+                                        "123456789012345678",
+                                        "1234567890123456789",
+                                        "12345678901234567890",
+                                        "0.00000000000000000001",
+                                        "9223372036854775807",
+                                        "-9223372036854775808",
+                                        "9223372036854775808",
+                                        "1e",
+                                        "1e+",
+                                        "1e0022",
+                                        "1E-7",
+                                        "1.5e+3",
+                                        "4.9406564584124654e-324",
+                                        "1.7976931348623157e308",
+                                        "1e99999",
+                                        "inf",
+                                        "nan",
+                                        "0x10",
+                                        "--1",
+                                        "-",
+                                        ".",
+                                        "1.2.3",
+                                        "007",
+                                        "-000000000000000000001"};
+  char text[64];
+  for (int i = 0; i < 4000; ++i) {
+    const double magnitude = std::ldexp(std::uniform_real_distribution<>(-1, 1)(random),
+                                        static_cast<int>(random() % 80) - 40);
+    const auto as_float = static_cast<float>(magnitude);
+    spellings.emplace_back(text, std::to_chars(text, text + 64, as_float).ptr);
+    spellings.emplace_back(text, std::to_chars(text, text + 64, magnitude).ptr);
+    std::snprintf(text, sizeof text, "%.17g", magnitude);
+    spellings.emplace_back(text);
+    std::snprintf(text, sizeof text, "%.*f", static_cast<int>(random() % 12), magnitude);
+    spellings.emplace_back(text);
+    std::snprintf(text, sizeof text, "%.*e", static_cast<int>(random() % 20), magnitude);
+    spellings.emplace_back(text);
+    spellings.push_back(std::to_string(static_cast<long long>(random() >> (random() % 64))));
+  }
+  return spellings;
+}
+
+TEST(TextTokens, NumbersReadInPlaceAreWhatFromCharsReads) {
+  for (const std::string& spelling : number_spellings()) {
+    for (const std::string& text : {spelling, spelling + " 1", spelling + "x", "+" + spelling}) {
+      std::string_view in_place = text, token = text;
+      double fast = 0, slow = 0;
+      const bool fast_read = io::take_double(in_place, fast);
+      const bool slow_read = io::parse_double(io::take_token(token), slow);
+      ASSERT_EQ(fast_read, slow_read) << text;
+      if (fast_read) {
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(fast), std::bit_cast<std::uint64_t>(slow)) << text;
+        EXPECT_EQ(in_place, token) << text;
+      }
+      // The integer prefix: what from_chars reads of it (after one '+'), and where it stops.
+      std::string_view rest = text;
+      long long integer = 0, expected = 0;
+      const std::size_t plus = text.starts_with("+") && !text.starts_with("+-") ? 1 : 0;
+      const auto [stop, error] =
+          std::from_chars(text.data() + plus, text.data() + text.size(), expected);
+      ASSERT_EQ(io::take_integer_prefix(rest, integer), error == std::errc()) << text;
+      if (error == std::errc()) {
+        EXPECT_EQ(integer, expected) << text;
+        EXPECT_EQ(rest.data(), stop) << text;
+      }
+    }
+  }
 }
 
 TEST(TextTokens, MixedLineEndsCountLinesAsBefore) {

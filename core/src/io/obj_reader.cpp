@@ -4,7 +4,8 @@
 // read here instead, exactly where tinyobjloader would have called back for them, and so are
 // smoothing groups (s), which it does not report (ObjStatements serves one statement at a time,
 // hands those over, and knows which one is read):
-// - coordinates, colours, texture coordinates and normals with std::from_chars, because
+// - coordinates, colours, texture coordinates and normals as std::from_chars reads them
+//   (text_scan.h; short decimals by an exact fast path that gives the same doubles), because
 //   tinyobjloader's parser is not correctly rounded (60-68 % of 17-digit coordinates come back
 //   1-8 ulp off) and original vertices keep their values bit for bit;
 // - face corners with a strict integer parse, because tinyobjloader's atoi reads letters as 0
@@ -12,380 +13,68 @@
 //   the last are refused, naming the line, as are non-finite numbers and short statements.
 // Continued lines and comments are resolved by ObjStatements (tinyobjloader knows neither). The
 // .mtl files are not read: the mesh keeps their paths, and the output refers to them.
+// A big file's two halves are read on two threads, the second by a detached reading that is
+// appended to the first (obj_reading.h says how that stays what one reading gives).
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <cstring>
+#include <exception>
 #include <istream>
-#include <unordered_map>
+#include <thread>
 
-#include "obj_statements.h"
+#include "obj_reading.h"
 #include "readers.h"
 
 namespace holefill::io {
 namespace fs = std::filesystem;
 namespace {
 
-std::string_view trimmed(std::string_view text) {
-  skip_blanks(text);
-  while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
-  return text;
-}
+// From this size on, a file's two halves are read on two threads (below, a thread costs more
+// than it saves, and small files stay on one).
+constexpr std::size_t kTwoPartsFrom = std::size_t{8} << 20;
 
-// The number (1-based) of `name` in `names`, added at the end when new.
-int number_of(std::string_view name, std::vector<std::string>& names,
-              std::unordered_map<std::string, int>& numbers) {
-  const auto [found, added] = numbers.try_emplace(std::string(name), 0);
-  if (added) {
-    names.emplace_back(name);
-    found->second = static_cast<int>(names.size());
-  }
-  return found->second;
-}
-
-// Sets values[index] (0 beyond the values set so far, which stay empty until one is not 0).
-void set_sparse(std::vector<int>& values, std::size_t index, int value) {
-  if (value == 0 && values.empty()) return;
-  values.resize(index, 0);
-  values.push_back(value);
-}
-
-// Records the files mtllib names (tinyobjloader splits the statement) without reading them.
+// Gives the files mtllib names (tinyobjloader splits the statement) to the reading without
+// reading them.
 class MaterialLibraries : public tinyobj::MaterialReader {
  public:
-  explicit MaterialLibraries(fs::path folder) : folder_(std::move(folder)) {}
+  MaterialLibraries(fs::path folder, ObjReading& reading)
+      : folder_(std::move(folder)), reading_(reading) {}
   bool operator()(const std::string& name, std::vector<tinyobj::material_t>*,
                   std::map<std::string, int>*, std::string*, std::string*) override {
     if (name.empty()) return false;
     std::error_code error;
     fs::path file = fs::weakly_canonical(folder_ / name, error);
     if (error) file = (folder_ / name).lexically_normal();
-    if (std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
+    reading_.add_material_library(file);
     return false;  // nothing read: tinyobjloader goes on to the statement's next file
   }
-  std::vector<fs::path> files;
 
  private:
   fs::path folder_;
+  ObjReading& reading_;
 };
 
-// One element's kind, for messages: "vertex", "texture coordinate", "normal".
-struct IndexKind {
-  const char* name;
-  const char* plural;
-  const char* syntax_error;  // what a corner is not when its number cannot be read
-};
-constexpr IndexKind kVertexIndex{"vertex", "vertices", "is not a vertex index"};
-constexpr IndexKind kTexcoordIndex{"texture coordinate", "texture coordinates",
-                                   "has no valid texture coordinate index"};
-constexpr IndexKind kNormalIndex{"normal", "normals", "has no valid normal index"};
-
-// How many of a face's corners have a texture coordinate, a normal.
-struct CornerCounts {
-  std::size_t texcoords = 0, normals = 0;
-};
-
-// A corner "v", "v/vt", "v//vn", "v/vt/vn" (or "v/", "v//", "v/vt/") at the start of `text`,
-// up to a blank or the end.
-struct PlainCorner {
-  long long index[3] = {0, 0, 0};  // vertex, texture coordinate, normal
-  bool given[3] = {true, false, false};
-};
-
-// Reads such a corner and removes it from `text`; false when `text` does not start with one.
-// Split as read_face splits a corner: the vertex before the first slash, the texture coordinate
-// up to the second.
-bool take_plain_corner(std::string_view& text, PlainCorner& corner) {
-  if (!take_integer_prefix(text, corner.index[0])) return false;
-  for (int part = 1; part < 3 && !at_token_end(text); ++part) {
-    if (text.front() != '/') return false;
-    text.remove_prefix(1);
-    if (at_token_end(text) || text.front() == '/') continue;  // this part is left out
-    if (!take_integer_prefix(text, corner.index[part])) return false;
-    corner.given[part] = true;
+// The first line boundary at or after `near` that does not cut a continued statement (a line
+// ending in a backslash, which may continue); text.size() when there is none.
+std::size_t split_point(std::string_view text, std::size_t near) {
+  while (near < text.size()) {
+    const void* found = std::memchr(text.data() + near, '\n', text.size() - near);
+    if (!found) return text.size();
+    std::size_t end = static_cast<std::size_t>(static_cast<const char*>(found) - text.data());
+    near = end + 1;
+    if (end > 0 && text[end - 1] == '\r') --end;
+    if (end == 0 || text[end - 1] != '\\') return near;
   }
-  return at_token_end(text);
-}
-
-class ObjReading {
- public:
-  ObjReading(const ObjStatements& statements, const fs::path& path)
-      : statements_(statements), path_(path) {}
-
-  void read_vertex();
-  void read_texcoord();
-  void read_normal();
-  void read_face();
-  void use_material(std::string_view name) {
-    material_ = number_of(trimmed(name), soup.obj.materials, material_numbers_);
-  }
-  void set_group(std::string_view names) {
-    group_ = number_of(names.empty() ? "default" : names, soup.obj.groups, group_numbers_);
-  }
-  void set_object(std::string_view name) {
-    object_ = number_of(trimmed(name), soup.obj.objects, object_numbers_);
-  }
-  // "s 1", "s off", "s 0": kept as written (a number, any size, or off) for the faces that follow.
-  void read_smoothing_group() {
-    smoothing_ =
-        number_of(trimmed(statements_.arguments()), soup.obj.smoothing_groups, smoothing_numbers_);
-  }
-  // Checks the indices against what the file defines and moves them into the soup.
-  void finish(LoadReport& report);
-
-  Soup soup;
-
- private:
-  [[noreturn]] void fail_here(const std::string& reason) const {
-    fail(path_, at_line(statements_.line()) + reason);
-  }
-  // The statement's numbers after its keyword, at most `most`; refuses a missing or bad one
-  // among the first `least`, and non-finite ones.
-  int read_numbers(double* values, int least, int most, const char* what) const;
-  long long read_index(std::string_view text, std::string_view corner, std::size_t defined,
-                       const IndexKind& kind) const;
-  // A read index's 0-based value; refuses 0 and relative indices before the first element.
-  long long resolve_index(long long index, std::size_t defined, const IndexKind& kind) const;
-  // A face's corners, pushed onto vertex_, texcoord_ and normal_.
-  void read_corners(std::string_view rest, CornerCounts& given);
-  // The same for the usual corners, read in place; false (some corners pushed) at the first
-  // that is not one (then read_corners tells what is wrong with it).
-  bool read_plain_corners(std::string_view rest, CornerCounts& given);
-  void read_vertex_colour(std::string_view rest);
-  void check_indices(const std::vector<long long>& indices, std::size_t defined,
-                     const IndexKind& kind) const;
-
-  const ObjStatements& statements_;
-  const fs::path& path_;
-  // 0-based indices by corner, checked against the counts at the end (a face may refer ahead);
-  // -1: the corner has no texture coordinate or normal.
-  std::vector<long long> vertex_, texcoord_, normal_;
-  bool any_texcoord_ = false, any_normal_ = false;
-  std::size_t partial_texcoords_ = 0, partial_normals_ = 0;  // faces with some corners only
-  int material_ = 0, group_ = 0, object_ = 0, smoothing_ = 0;
-  std::unordered_map<std::string, int> material_numbers_, group_numbers_, object_numbers_,
-      smoothing_numbers_;
-};
-
-int ObjReading::read_numbers(double* values, int least, int most, const char* what) const {
-  std::string_view rest = statements_.arguments();
-  int count = 0;
-  for (; count < most; ++count) {
-    std::string_view unread = rest;
-    if (take_double(rest, values[count])) continue;
-    if (count >= least) break;
-    const std::string_view token = take_token(unread);
-    fail_here(std::string(what) + " needs " + std::to_string(least) + " numbers" +
-              (token.empty() ? std::string() : ", got " + quoted(token)));
-  }
-  for (int i = 0; i < count; ++i) {
-    if (!std::isfinite(values[i])) fail_here(std::string(what) + " has a non-finite value");
-  }
-  return count;
-}
-
-void ObjReading::read_vertex() {
-  double xyz[3];
-  std::string_view rest = statements_.arguments();
-  for (double& value : xyz) {
-    std::string_view unread = rest;
-    if (!take_double(rest, value)) {
-      const std::string_view token = take_token(unread);
-      fail_here("vertex needs 3 numbers" +
-                (token.empty() ? std::string() : ", got " + quoted(token)));
-    }
-  }
-  if (static_cast<long long>(soup.positions.size()) >= kMaxVertices) {
-    fail_here("more vertices than holefill supports");
-  }
-  const Point p(xyz[0], xyz[1], xyz[2]);
-  require_finite(p, soup.positions.size() + 1, statements_.line(), path_);
-  soup.positions.push_back(p);
-  read_vertex_colour(rest);
-}
-
-// The common "v x y z r g b" extension: colours in [0, 1] as vertex attributes, from the first
-// vertex that has them (vertices without get 0).
-void ObjReading::read_vertex_colour(std::string_view rest) {
-  double rgb[3];
-  for (double& channel : rgb) {
-    if (!take_double(rest, channel)) return;
-  }
-  if (soup.layout.vertex.empty()) {
-    for (const char* name : {"red", "green", "blue"}) soup.layout.vertex.push_back({name});
-    soup.vertex_values.resize(3);
-  }
-  for (int c = 0; c < 3; ++c) {
-    soup.vertex_values[c].resize(soup.positions.size() - 1, 0.0);
-    soup.vertex_values[c].push_back(rgb[c]);
-  }
-}
-
-void ObjReading::read_texcoord() {
-  std::array<double, 3> uvw{0.0, 0.0, 0.0};
-  const int count = read_numbers(uvw.data(), 1, 3, "texture coordinate");
-  soup.obj.texcoord_size =
-      soup.obj.texcoords.empty() ? count : std::max(soup.obj.texcoord_size, count);
-  soup.obj.texcoords.push_back(uvw);
-}
-
-void ObjReading::read_normal() {
-  double xyz[3];
-  read_numbers(xyz, 3, 3, "normal");
-  soup.obj.normals.emplace_back(xyz[0], xyz[1], xyz[2]);
-}
-
-long long ObjReading::read_index(std::string_view text, std::string_view corner,
-                                 std::size_t defined, const IndexKind& kind) const {
-  long long index = 0;
-  if (!parse_integer(text, index)) {
-    fail_here("face corner " + quoted(corner) + " " + kind.syntax_error);
-  }
-  return resolve_index(index, defined, kind);
-}
-
-long long ObjReading::resolve_index(long long index, std::size_t defined,
-                                    const IndexKind& kind) const {
-  if (index == 0) fail_here(std::string(kind.name) + " index 0 (OBJ counts from 1)");
-  if (index > 0) return index - 1;
-  // Relative: -1 is the last element defined so far.
-  if (index < -static_cast<long long>(defined)) {
-    fail_here(std::string("relative ") + kind.name + " index " + std::to_string(index) +
-              " reaches before the first " + kind.name);
-  }
-  return index + static_cast<long long>(defined);
-}
-
-bool ObjReading::read_plain_corners(std::string_view rest, CornerCounts& given) {
-  for (skip_blanks(rest); !rest.empty(); skip_blanks(rest)) {
-    PlainCorner corner;
-    if (!take_plain_corner(rest, corner)) return false;
-    // Resolved in read_index's order, so that a bad index fails as there.
-    vertex_.push_back(resolve_index(corner.index[0], soup.positions.size(), kVertexIndex));
-    texcoord_.push_back(
-        corner.given[1] ? resolve_index(corner.index[1], soup.obj.texcoords.size(), kTexcoordIndex)
-                        : -1);
-    normal_.push_back(corner.given[2]
-                          ? resolve_index(corner.index[2], soup.obj.normals.size(), kNormalIndex)
-                          : -1);
-    given.texcoords += corner.given[1] ? 1 : 0;
-    given.normals += corner.given[2] ? 1 : 0;
-  }
-  return true;
-}
-
-void ObjReading::read_corners(std::string_view rest, CornerCounts& given) {
-  for (std::string_view corner = take_token(rest); !corner.empty(); corner = take_token(rest)) {
-    // "v", "v/vt", "v//vn" or "v/vt/vn".
-    const std::size_t slash = corner.find('/');
-    vertex_.push_back(
-        read_index(corner.substr(0, slash), corner, soup.positions.size(), kVertexIndex));
-    const std::string_view after =
-        slash == std::string_view::npos ? std::string_view() : corner.substr(slash + 1);
-    const std::size_t second = after.find('/');
-    const std::string_view vt = after.substr(0, second);
-    const std::string_view vn =
-        second == std::string_view::npos ? std::string_view() : after.substr(second + 1);
-    texcoord_.push_back(
-        vt.empty() ? -1 : read_index(vt, corner, soup.obj.texcoords.size(), kTexcoordIndex));
-    normal_.push_back(vn.empty() ? -1
-                                 : read_index(vn, corner, soup.obj.normals.size(), kNormalIndex));
-    given.texcoords += vt.empty() ? 0 : 1;
-    given.normals += vn.empty() ? 0 : 1;
-  }
-}
-
-void ObjReading::read_face() {
-  const std::size_t first = vertex_.size();
-  CornerCounts given;
-  if (!read_plain_corners(statements_.arguments(), given)) {
-    // Read again from the first corner, the way that names what is wrong.
-    for (auto* indices : {&vertex_, &texcoord_, &normal_}) indices->resize(first);
-    given = CornerCounts();
-    read_corners(statements_.arguments(), given);
-  }
-  const std::size_t texcoords = given.texcoords, normals = given.normals;
-  const std::size_t corners = vertex_.size() - first;
-  // A face gives every corner a texture coordinate (a normal), or none.
-  auto all_or_none = [&](std::vector<long long>& values, std::size_t given, std::size_t& partial) {
-    if (given == 0 || given == corners) return given != 0;
-    std::fill(values.begin() + static_cast<std::ptrdiff_t>(first), values.end(), -1);
-    ++partial;
-    return false;
-  };
-  any_texcoord_ = all_or_none(texcoord_, texcoords, partial_texcoords_) || any_texcoord_;
-  any_normal_ = all_or_none(normal_, normals, partial_normals_) || any_normal_;
-  const std::size_t face = soup.face_count();
-  soup.end_face(vertex_.size(), statements_.line());
-  set_sparse(soup.face_material, face, material_);
-  set_sparse(soup.face_group, face, group_);
-  set_sparse(soup.face_object, face, object_);
-  set_sparse(soup.face_smoothing, face, smoothing_);
-}
-
-void ObjReading::check_indices(const std::vector<long long>& indices, std::size_t defined,
-                               const IndexKind& kind) const {
-  for (std::size_t f = 0, c = 0; f < soup.face_count(); ++f) {
-    for (; c < soup.face_end[f]; ++c) {
-      if (indices[c] < static_cast<long long>(defined)) continue;
-      fail(path_, at_line(soup.face_line[f]) + "face refers to " + kind.name + " " +
-                      std::to_string(indices[c] + 1) + ", but the file has " +
-                      std::to_string(defined) + " " + kind.plural);
-    }
-  }
-}
-
-void ObjReading::finish(LoadReport& report) {
-  const std::size_t faces = soup.face_count();
-  for (auto* values :
-       {&soup.face_material, &soup.face_group, &soup.face_object, &soup.face_smoothing}) {
-    if (!values->empty()) values->resize(faces, 0);
-  }
-  check_indices(vertex_, soup.positions.size(), kVertexIndex);
-  soup.corners.assign(vertex_.size(), 0);
-  std::transform(vertex_.begin(), vertex_.end(), soup.corners.begin(),
-                 [](long long index) { return static_cast<int>(index); });
-  // Texture coordinate and normal numbers count from 1, 0 for none.
-  auto keep = [&](const std::vector<long long>& indices, std::size_t defined, const IndexKind& kind,
-                  std::vector<int>& numbers) {
-    check_indices(indices, defined, kind);
-    numbers.assign(indices.size(), 0);
-    std::transform(indices.begin(), indices.end(), numbers.begin(),
-                   [](long long index) { return static_cast<int>(index + 1); });
-  };
-  if (any_texcoord_)
-    keep(texcoord_, soup.obj.texcoords.size(), kTexcoordIndex, soup.corner_texcoord);
-  if (any_normal_) keep(normal_, soup.obj.normals.size(), kNormalIndex, soup.corner_normal);
-  soup.obj.file_texcoords = soup.obj.texcoords.size();
-  soup.obj.file_normals = soup.obj.normals.size();
-  for (auto& column : soup.vertex_values) column.resize(soup.positions.size(), 0.0);
-  auto warn = [&](std::size_t count, const char* what) {
-    if (count)
-      report.warnings.push_back(std::to_string(count) + " faces gave " + what +
-                                " to some of their corners only; those were dropped");
-  };
-  warn(partial_texcoords_, "texture coordinates");
-  warn(partial_normals_, "normals");
+  return text.size();
 }
 
 }  // namespace
 
-Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) {
-  require_text(text, path, "OBJ");
-  ObjStatements statements(text);
-  ObjReading reading(statements, path);
-  statements.read_directly([&reading](std::string_view keyword) {
-    if (keyword == "v") {
-      reading.read_vertex();
-    } else if (keyword == "vt") {
-      reading.read_texcoord();
-    } else if (keyword == "vn") {
-      reading.read_normal();
-    } else if (keyword == "s") {
-      reading.read_smoothing_group();
-    } else {
-      reading.read_face();
-    }
-  });
+void ObjReading::read(std::string_view text) {
+  ObjStatements statements(text, lines_);
+  statements_ = &statements;
+  statements.read_directly([this](DirectStatement kind) { read_statement(kind); });
   tinyobj::callback_t callbacks;
   callbacks.usemtl_cb = [](void* r, const char* name, int) {
     static_cast<ObjReading*>(r)->use_material(name);
@@ -402,24 +91,120 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) 
     static_cast<ObjReading*>(r)->set_object(name);
   };
   std::error_code error;
-  fs::path folder = fs::absolute(path, error).parent_path();
-  MaterialLibraries libraries(folder);
+  MaterialLibraries libraries(fs::absolute(path_, error).parent_path(), *this);
   std::istream stream(&statements);
-  tinyobj::LoadObjWithCallback(stream, callbacks, &reading, &libraries);
+  tinyobj::LoadObjWithCallback(stream, callbacks, this, &libraries);
+  statements_ = nullptr;
   statements.rethrow_failure();
-  reading.soup.obj.material_libraries = libraries.files;
-  report.elements_ignored += statements.elements_ignored();
-  report.degenerate_faces_dropped += statements.empty_faces();
-  if (!statements.not_kept().empty()) {
-    std::string kinds;
-    for (const auto& [keyword, count] : statements.not_kept()) {
-      kinds +=
-          (kinds.empty() ? "" : ", ") + io::quoted(keyword) + " (" + std::to_string(count) + ")";
-    }
-    report.warnings.push_back("statements holefill does not keep were dropped: " + kinds);
+  lines_ += statements.lines_read();
+  elements_ignored_ += statements.elements_ignored();
+  empty_faces_ += statements.empty_faces();
+  for (const auto& [keyword, count] : statements.not_kept()) not_kept_[keyword] += count;
+}
+
+void ObjReading::FaceNames::append(const FaceNames& later, std::size_t own) {
+  std::vector<int> number_of(later.names.size() + 1, 0);  // later's numbers as this one's
+  for (std::size_t k = 0; k < later.names.size(); ++k) number_of[k + 1] = number(later.names[k]);
+  auto ours = [&](int value) { return value == kInherited ? current : number_of[value]; };
+  const bool none = faces.empty() && std::all_of(later.faces.begin(), later.faces.end(),
+                                                 [&](int value) { return ours(value) == 0; });
+  if (!none) {
+    faces.resize(own, 0);
+    for (const int value : later.faces) faces.push_back(ours(value));
   }
-  reading.finish(report);
-  return std::move(reading.soup);
+  current = ours(later.current);
+}
+
+bool ObjReading::append(ObjReading& second) {
+  Soup& later = second.soup_;
+  const std::size_t vertices = soup_.positions.size(), texcoords = soup_.obj.texcoords.size(),
+                    normals = soup_.obj.normals.size();
+  if (static_cast<long long>(vertices + later.positions.size()) > kMaxVertices ||
+      !second.vertex_.relative_reach(vertices) || !second.texcoord_.relative_reach(texcoords) ||
+      !second.normal_.relative_reach(normals)) {
+    return false;
+  }
+  if (!later.layout.vertex.empty() && soup_.layout.vertex.empty()) {
+    soup_.layout.vertex = later.layout.vertex;
+    soup_.vertex_values.resize(later.vertex_values.size());
+  }
+  for (std::size_t c = 0; c < later.vertex_values.size(); ++c) {
+    soup_.vertex_values[c].resize(vertices, 0.0);
+    append_and_free(soup_.vertex_values[c], later.vertex_values[c]);
+  }
+  append_and_free(soup_.positions, later.positions);
+  const std::size_t corners = soup_.corners.size(), faces = soup_.face_count(),
+                    later_corners = later.corners.size();
+  vertex_.append(second.vertex_, corners, later_corners, vertices);
+  texcoord_.append(second.texcoord_, corners, later_corners, texcoords);
+  normal_.append(second.normal_, corners, later_corners, normals);
+  soup_.face_end.reserve(faces + later.face_count());
+  soup_.face_line.reserve(faces + later.face_count());
+  for (std::size_t f = 0; f < later.face_count(); ++f) {
+    soup_.face_end.push_back(corners + later.face_end[f]);
+    soup_.face_line.push_back(lines_ + later.face_line[f]);
+  }
+  FaceNames ObjReading::*const per_face[] = {&ObjReading::material_, &ObjReading::group_,
+                                             &ObjReading::object_, &ObjReading::smoothing_};
+  for (const auto names : per_face) (this->*names).append(second.*names, faces);
+  ObjTables& tables = soup_.obj;
+  if (!later.obj.texcoords.empty()) {
+    tables.texcoord_size = tables.texcoords.empty()
+                               ? later.obj.texcoord_size
+                               : std::max(tables.texcoord_size, later.obj.texcoord_size);
+  }
+  append_and_free(tables.texcoords, later.obj.texcoords);
+  append_and_free(tables.normals, later.obj.normals);
+  for (const fs::path& file : later.obj.material_libraries) add_material_library(file);
+  any_texcoord_ = any_texcoord_ || second.any_texcoord_;
+  any_normal_ = any_normal_ || second.any_normal_;
+  partial_texcoords_ += second.partial_texcoords_;
+  partial_normals_ += second.partial_normals_;
+  elements_ignored_ += second.elements_ignored_;
+  empty_faces_ += second.empty_faces_;
+  for (const auto& [keyword, count] : second.not_kept_) not_kept_[keyword] += count;
+  lines_ += second.lines_;
+  return true;
+}
+
+Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report,
+               std::size_t split_near) {
+  require_text(text, path, "OBJ");
+  ObjReading reading(path, false);
+  const std::size_t split = split_point(text, split_near);
+  if (split >= text.size()) {
+    reading.read(text);
+    return reading.finish(report);
+  }
+  // The second half on a thread of its own, the first here; then the second is appended, or
+  // read again after the first where it could not be read alone.
+  ObjReading second(path, true);
+  bool second_read = false;
+  std::thread thread;
+  try {
+    thread = std::thread([&] {
+      try {
+        second.read(text.substr(split));
+        second_read = true;
+      } catch (...) {  // read again below, where the first half's errors come first
+      }
+    });
+  } catch (const std::system_error&) {  // no thread to be had: one after the other
+  }
+  try {
+    reading.read(text.substr(0, split));
+  } catch (...) {
+    if (thread.joinable()) thread.join();
+    throw;
+  }
+  if (thread.joinable()) thread.join();
+  if (!second_read || !reading.append(second)) reading.read(text.substr(split));
+  return reading.finish(report);
+}
+
+Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report) {
+  return parse_obj(text, path, report,
+                   text.size() >= kTwoPartsFrom ? text.size() / 2 : std::string_view::npos);
 }
 
 }  // namespace holefill::io

@@ -21,15 +21,22 @@
 
 namespace holefill::io {
 
+// The statements that ObjStatements can hand to the reader directly (read_directly).
+enum class DirectStatement { Vertex, Texcoord, Normal, Face, Smoothing };
+
 class ObjStatements : public std::streambuf {
  public:
-  explicit ObjStatements(std::string_view text) : lines_(text) {}
+  // `text` follows `lines_before` lines of the file (its first line is line lines_before + 1).
+  explicit ObjStatements(std::string_view text, std::size_t lines_before = 0)
+      : lines_(text), lines_before_(lines_before) {}
 
   // The statement being read (no comment, no end of line) and the line it starts on.
   std::string_view statement() const { return statement_; }
   // The statement after its keyword (what take_token leaves of it; "fo" counts as "f").
   std::string_view arguments() const { return arguments_; }
   std::size_t line() const { return line_; }
+  // The lines of the text read so far (all of them once the stream has ended).
+  std::size_t lines_read() const { return lines_.number(); }
 
   // Lines, points, curves and surfaces (not surfaces holefill fills), and the keywords of other
   // statements that are not kept (free-form attributes "vp", "deg", ...), by count.
@@ -40,10 +47,10 @@ class ObjStatements : public std::streambuf {
 
   // From now on each statement that tinyobjloader would take for a vertex ("v"), texture
   // coordinate ("vt"), normal ("vn") or face with corners ("f", "fo"), and each smoothing group
-  // ("s"), goes to `read` with its keyword ("fo" as "f"), in the file's order among the served
+  // ("s"), goes to `read` with its kind ("fo" is a face), in the file's order among the served
   // ones, instead of being served.
   // What `read` throws ends the stream; rethrow_failure() throws it again.
-  void read_directly(std::function<void(std::string_view keyword)> read) {
+  void read_directly(std::function<void(DirectStatement)> read) {
     read_directly_ = std::move(read);
   }
   // Throws what a direct read threw, if one did.
@@ -57,22 +64,24 @@ class ObjStatements : public std::streambuf {
  private:
   // Moves to the next statement that is not blank; false at the end of the text.
   bool next_statement();
-  void classify(std::string_view keyword);
-  // The statement's keyword when tinyobjloader would take it for one that read_directly covers
-  // (after spaces and tabs only, followed by one or by the end), else empty. Uses the keyword
-  // next_statement found instead of scanning the statement again.
-  std::string_view direct_keyword() const;
+  // Whether tinyobjloader would take the statement for one that read_directly covers (its
+  // keyword after spaces and tabs only, followed by one or by the end), and which. Uses the
+  // keyword next_statement found instead of scanning the statement again.
+  bool is_direct(DirectStatement& kind) const;
 
   Lines lines_;
+  std::size_t lines_before_;
   std::string joined_;  // a statement continued over several lines
   std::string served_;  // what tinyobjloader reads: the statement and '\n'
   std::string_view statement_;
   std::string_view keyword_, arguments_;  // parts of statement_
+  bool keyword_is_direct_ = false;        // one of read_directly's, which is direct_kind_
+  DirectStatement direct_kind_ = DirectStatement::Vertex;
   std::size_t line_ = 0;
   std::size_t elements_ignored_ = 0;
   std::size_t empty_faces_ = 0;
   std::map<std::string, std::size_t> not_kept_;
-  std::function<void(std::string_view)> read_directly_;
+  std::function<void(DirectStatement)> read_directly_;
   std::exception_ptr failure_;
 };
 

@@ -27,6 +27,12 @@ Format sniff(std::string_view bytes);
 // groups, objects and smoothing groups, and the material libraries; lines, points and curves are
 // counted in report.elements_ignored, other statements not kept named in a warning.
 Soup parse_obj(std::string_view text, const std::filesystem::path& path, LoadReport& report);
+// The same, with the text cut at the first line boundary from byte `split_near` on that does
+// not cut a continued statement, when there is one, and the part after it read on a second
+// thread: the same soup, warnings and messages. The three-argument form cuts texts of 8 MB and
+// more in the middle, and reads smaller ones whole (tests cut small ones anywhere).
+Soup parse_obj(std::string_view text, const std::filesystem::path& path, LoadReport& report,
+               std::size_t split_near);
 
 // ASCII OFF, 3D, with the optional ST/C/N prefixes of the keyword. Lines after the counted
 // faces are ignored with a warning.
