@@ -1,7 +1,8 @@
-// A hash map from 64-bit keys to ints for the flat refinement (flat_patch.h): open addressing
-// with linear probing in one array, no erase (a count that falls to 0 stays as an entry). Written
-// here because std::unordered_map's node per entry cost more than the rest of a split, and
-// Debian 12's hash-map libraries (abseil) would be a dependency for these few lines.
+// A hash map from 64-bit keys to ints for the flat refinement (flat_patch.h) and the cells that
+// mesh_face_index.cpp marks: open addressing with linear probing in one array, no erase (a count
+// that falls to 0 stays as an entry). Written here because std::unordered_map's node per entry
+// cost more than the rest of a split, and Debian 12's hash-map libraries (abseil) would be a
+// dependency for these few lines.
 #pragma once
 
 #include <cstddef>

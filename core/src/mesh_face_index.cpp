@@ -5,13 +5,19 @@
 #include <iterator>
 #include <optional>
 
+#include "flat_index_map.h"
+
 namespace holefill::detail {
 namespace {
 
-// The coarse grid that picks the faces near the regions has at most this many cells; a face whose
-// box spans more than kMaxCellsPerFace of them is filed without looking.
-constexpr double kMaxCoarseCells = 1 << 22;
+// The cells that pick the faces near the regions are about as large as the regions; a face
+// whose box spans more than kMaxCellsPerFace of them is filed without looking. The regions may
+// be filed under at most kMaxMarkedCells cells (a region far larger than the others makes the cells
+// larger), and a cell index needs at most kAxisBits bits on each axis.
+constexpr double kMaxMarkedCells = 1 << 22;
 constexpr double kMaxCellsPerFace = 64;
+constexpr int kAxisBits = 21;
+constexpr double kMaxCellsPerAxis = 1 << kAxisBits;
 
 // Finite coordinates, low <= high on every axis (a NaN, an infinity or the empty Box fail).
 bool is_finite(const Box& box) {
@@ -47,13 +53,14 @@ Box corners_box(const Mesh& mesh, FaceHandle face) {
   return box;
 }
 
-// Which cells of a coarse grid over the regions' bounding box the regions touch: a quick,
-// conservative test of whether a face's box may overlap one of them (a face it lets through
-// only costs a grid entry).
+// The regions filed under the cells of a grid over their bounding box, in a hash map (only the
+// cells they touch take memory): whether a face's box overlaps one of them, found by testing only
+// the regions in its cells. A dense array of coarse cells let most faces of a mesh through when
+// the regions were spread out (a thousand small holes over a whole scan).
 class RegionCells {
  public:
   // Nothing when the regions are too far apart for the arithmetic (coordinates near the largest
-  // doubles): every face is then filed.
+  // doubles): every face is then filed. The regions must outlive the result.
   static std::optional<RegionCells> of(const std::vector<Box>& regions) {
     RegionCells cells;
     double mean_extent = 0.0;
@@ -63,51 +70,64 @@ class RegionCells {
     }
     const Point span = cells.bound_.high - cells.bound_.low;
     cells.cell_ = mean_extent > 0.0 ? mean_extent : std::max(span.max(), 1.0);
-    double count = cells.counts(span);
-    while (count > kMaxCoarseCells && std::isfinite(count) && std::isfinite(cells.cell_)) {
-      cells.cell_ *= std::max(2.0, std::cbrt(count / kMaxCoarseCells));
-      count = cells.counts(span);
+    while (std::isfinite(cells.cell_) && !cells.fits(span, regions)) {
+      cells.cell_ *= 2.0;
     }
-    if (!std::isfinite(count) || !std::isfinite(cells.cell_) || count > kMaxCoarseCells) {
-      return std::nullopt;
-    }
-    cells.marked_.assign(static_cast<std::size_t>(count), 0);
-    for (const Box& region : regions) {
-      cells.for_each_cell(region, INFINITY, [&cells](std::size_t c) {
-        cells.marked_[c] = 1;
+    if (!std::isfinite(cells.cell_) || !cells.fits(span, regions)) return std::nullopt;
+    cells.regions_ = &regions;
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+      cells.for_each_cell(regions[r], INFINITY, [&cells, r](std::uint64_t key) {
+        int& first = cells.first_link_.find_or_insert(key, kNoLink);
+        cells.links_.push_back({static_cast<int>(r), first});
+        first = static_cast<int>(cells.links_.size()) - 1;
         return false;
       });
     }
     return cells;
   }
 
-  bool may_touch(const Box& box) const {
+  // Whether `box` overlaps a region; true also for a box spanning too many cells to look.
+  bool overlaps_region(const Box& box) const {
     if (!box.overlaps(bound_)) return false;
-    return for_each_cell(box, kMaxCellsPerFace, [this](std::size_t c) { return marked_[c] != 0; });
+    return for_each_cell(box, kMaxCellsPerFace, [this, &box](std::uint64_t key) {
+      for (int link = first_link_.find(key, kNoLink); link != kNoLink; link = links_[link].next) {
+        if ((*regions_)[static_cast<std::size_t>(links_[link].region)].overlaps(box)) return true;
+      }
+      return false;
+    });
   }
 
  private:
-  // The grid's dimensions for `span` at the current cell size, and their product.
-  double counts(const Point& span) {
-    double count = 1.0;
+  // Whether, at the current cell size, the span's cells can be numbered on every axis and the
+  // regions mark few enough cells.
+  bool fits(const Point& span, const std::vector<Box>& regions) {
     for (int axis = 0; axis < 3; ++axis) {
       const double n = std::floor(span[axis] / cell_) + 1.0;
-      dims_[axis] = std::isfinite(n) ? static_cast<std::size_t>(std::min(n, kMaxCoarseCells)) : 1;
-      count *= n;
+      if (!(n <= kMaxCellsPerAxis)) return false;
+      dims_[axis] = static_cast<std::uint64_t>(n);
     }
-    return count;
+    double marked = 0.0;
+    for (const Box& region : regions) {
+      double cells = 1.0;
+      for (int axis = 0; axis < 3; ++axis) {
+        cells *=
+            static_cast<double>(index(region.high[axis], axis) - index(region.low[axis], axis) + 1);
+      }
+      marked += cells;
+    }
+    return marked <= kMaxMarkedCells;
   }
 
-  std::size_t index(double x, int axis) const {
+  std::uint64_t index(double x, int axis) const {
     const double i = std::floor((x - bound_.low[axis]) / cell_);
-    return static_cast<std::size_t>(std::clamp(i, 0.0, static_cast<double>(dims_[axis] - 1)));
+    return static_cast<std::uint64_t>(std::clamp(i, 0.0, static_cast<double>(dims_[axis] - 1)));
   }
 
-  // Calls visit(cell) for the cells `box` touches (within the bound) until one returns true;
+  // Calls visit(cell key) for the cells `box` touches (within the bound) until one returns true;
   // true then, or when the box spans more than `most` cells (none is visited then).
   template <class Visit>
   bool for_each_cell(const Box& box, double most, Visit&& visit) const {
-    std::size_t low[3], high[3];
+    std::uint64_t low[3], high[3];
     double cells = 1.0;
     for (int axis = 0; axis < 3; ++axis) {
       low[axis] = index(box.low[axis], axis);
@@ -118,17 +138,25 @@ class RegionCells {
     for (auto x = low[0]; x <= high[0]; ++x) {
       for (auto y = low[1]; y <= high[1]; ++y) {
         for (auto z = low[2]; z <= high[2]; ++z) {
-          if (visit((x * dims_[1] + y) * dims_[2] + z)) return true;
+          // Below 2^63 - 1: never the hash set's empty key.
+          if (visit((x << (2 * kAxisBits)) | (y << kAxisBits) | z)) return true;
         }
       }
     }
     return false;
   }
 
+  static constexpr int kNoLink = -1;
+  struct Link {
+    int region, next;  // the next link of the same cell, or kNoLink
+  };
+
   Box bound_;
   double cell_ = 1.0;
-  std::size_t dims_[3] = {1, 1, 1};
-  std::vector<char> marked_;
+  std::uint64_t dims_[3] = {1, 1, 1};
+  const std::vector<Box>* regions_ = nullptr;
+  FlatIndexMap first_link_;  // cell key -> its first link
+  std::vector<Link> links_;
 };
 
 }  // namespace
@@ -156,10 +184,17 @@ void MeshFaceIndex::file_faces_near(std::vector<Box> regions) const {
   for (const auto f : mesh_.faces()) {
     if (f.idx() >= indexed_faces_) break;
     const Box box = corners_box(mesh_, f);
-    if (part.everywhere || cells->may_touch(box)) boxes.emplace_back(f.idx(), box);
+    if (part.everywhere || cells->overlaps_region(box)) boxes.emplace_back(f.idx(), box);
   }
+  part.faces = boxes.size();
   part.grid = FaceGrid(std::move(boxes));
   parts_.push_back(std::move(part));
+}
+
+std::size_t MeshFaceIndex::filed_faces() const {
+  std::size_t faces = 0;
+  for (const Part& part : parts_) faces += part.faces;
+  return faces;
 }
 
 const MeshFaceIndex::Part& MeshFaceIndex::part_holding(const Box& box) const {

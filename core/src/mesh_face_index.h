@@ -36,6 +36,10 @@ class MeshFaceIndex {
   // the mesh).
   std::vector<int> near(const Box& box) const;
 
+  // How many faces the index has filed so far, counted once per region set that filed them: the
+  // faces whose boxes overlap a region (and faces spanning many of the region grid's cells).
+  std::size_t filed_faces() const;
+
  private:
   // The faces near some regions, in one grid; `everywhere` when a region was not a finite box
   // (then every face is filed, as a NaN box overlaps every box).
@@ -43,6 +47,7 @@ class MeshFaceIndex {
     std::vector<Box> regions;
     bool everywhere = false;
     FaceGrid grid;
+    std::size_t faces = 0;
   };
   const Part& part_holding(const Box& box) const;
   void file_faces_near(std::vector<Box> regions) const;

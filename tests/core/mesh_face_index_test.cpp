@@ -94,5 +94,31 @@ TEST(MeshFaceIndex, ExactWithFarApartRegionsAndHugeCoordinates) {
   }
 }
 
+// Many small regions spread over the whole mesh (a scan with hundreds of small holes) file the
+// faces that overlap them and no others: a coarse grid of marked cells filed most of the mesh.
+TEST(MeshFaceIndex, FilesOnlyFacesOverlappingSpreadOutRegions) {
+  const Mesh mesh =
+      testing::make_grid(150, [](double x, double y) { return 0.05 * std::sin(7 * x + 5 * y); });
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> coordinate(0.0, 1.0), half(0.002, 0.02);
+  std::vector<Box> regions;
+  for (int r = 0; r < 300; ++r) {
+    regions.push_back(box_around({coordinate(rng), coordinate(rng), 0.0}, half(rng)));
+  }
+  std::size_t overlapping = 0;
+  for (const auto f : mesh.faces()) {
+    const Box box = box_of(mesh, f);
+    overlapping += std::any_of(regions.begin(), regions.end(),
+                               [&box](const Box& region) { return region.overlaps(box); });
+  }
+  const MeshFaceIndex index(mesh, regions);
+  EXPECT_EQ(index.filed_faces(), overlapping);
+  EXPECT_LT(overlapping, mesh.n_faces() / 4);
+  for (const Box& region : regions) {
+    ASSERT_EQ(index.near(region), scanned(mesh, static_cast<int>(mesh.n_faces()), {}, region));
+  }
+  EXPECT_EQ(index.filed_faces(), overlapping);  // lookups inside the regions file nothing more
+}
+
 }  // namespace
 }  // namespace holefill::detail
