@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 
+#include "deletion_flags.h"
+
 namespace holefill {
 
 namespace {
@@ -78,6 +80,7 @@ MeshPieces mesh_pieces(const Mesh& mesh) {
 RemovedPieces remove_small_pieces(Mesh& mesh, std::size_t max_faces) {
   RemovedPieces removed;
   const MeshPieces found = mesh_pieces(mesh);
+  const DeletionFlags flags(mesh);
   std::vector<VertexHandle> corners;
   for (const auto& piece : found.pieces) {
     if (piece.largest || piece.faces.size() > max_faces) continue;

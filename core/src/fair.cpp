@@ -6,6 +6,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "deletion_flags.h"
+
 namespace holefill {
 namespace {
 
@@ -216,7 +218,7 @@ FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options
   }
   for (const auto v : patch.new_vertices) {
     if (!v.is_valid() || static_cast<std::size_t>(v.idx()) >= mesh.n_vertices() ||
-        mesh.status(v).deleted()) {
+        is_deleted(mesh, v)) {
       result.problem = "the patch lists a vertex that is not in the mesh";
       return result;
     }

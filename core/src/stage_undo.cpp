@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "deletion_flags.h"
 #include "geometry.h"
 #include "holefill/triangulate.h"
 
@@ -66,13 +67,16 @@ void StageUndo::undo(Mesh& mesh, Patch& patch) const {
     patch = patch_;
     return;
   }
-  for (const auto f : patch.faces) {
-    if (!mesh.status(f).deleted()) mesh.delete_face(f, false);
+  {
+    const DeletionFlags flags(mesh);
+    for (const auto f : patch.faces) {
+      if (!mesh.status(f).deleted()) mesh.delete_face(f, false);
+    }
+    for (const auto v : patch.new_vertices) {
+      if (!mesh.status(v).deleted()) mesh.delete_vertex(v, false);
+    }
+    mesh.garbage_collection();
   }
-  for (const auto v : patch.new_vertices) {
-    if (!mesh.status(v).deleted()) mesh.delete_vertex(v, false);
-  }
-  mesh.garbage_collection();
   // Added again in the same order, every element gets back its index.
   patch = patch_;
   patch.faces.clear();

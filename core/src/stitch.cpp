@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "boundary_points.h"
+#include "deletion_flags.h"
 #include "t_junctions.h"
 #include "vertex_link.h"
 
@@ -200,6 +201,7 @@ bool merge_vertices(Mesh& mesh, const std::vector<int>& kept_of) {
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
 
   const Mesh before = mesh;
+  const DeletionFlags flags(mesh);  // after the copy: restoring it brings no flags back
   for (const auto f : faces) mesh.delete_face(f, false);
   for (const auto v : merged) mesh.delete_vertex(v, false);
   const std::size_t edges_before = mesh.n_edges();

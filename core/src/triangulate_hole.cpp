@@ -4,6 +4,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "deletion_flags.h"
 #include "hole_triangulation.h"
 #include "vertex_link.h"
 
@@ -191,6 +192,7 @@ TriangulateHoleResult apply_triangulation(Mesh& mesh, const Hole& hole,
     if (!face.is_valid()) {
       // The topology around the loop (e.g. a pinched vertex) refused a triangle: take back the
       // ones added so far. They are the newest elements, so garbage collection moves no others.
+      const DeletionFlags flags(mesh);
       for (const auto added : patch.faces) mesh.delete_face(added, false);
       mesh.garbage_collection();
       result.failure = "the mesh around this hole refused a patch triangle (non-manifold vertex)";

@@ -123,6 +123,30 @@ TEST(Holes, TwoSquareHolesMeetingAtACornerArePinchedAndSeparateHolesAreNot) {
   EXPECT_EQ(by_pinch[false], 1);  // cell (4, 1)
 }
 
+// Removing pieces deletes faces and vertices, which needs OpenMesh's status flags: a Mesh does not
+// carry them, so they are requested for the deletion only (the elements are collected, not left
+// marked), and a library user's mesh that had some keeps them.
+TEST(Pieces, RemovingThemLeavesNoElementMarkedAndTheFlagsAsTheyWere) {
+  Mesh plain = sphere_with_random_holes(11);
+  const auto a = plain.add_vertex({3.0, 0.0, 0.0}), b = plain.add_vertex({3.5, 0.0, 0.0});
+  plain.add_face(a, b, plain.add_vertex({3.0, 0.5, 0.0}));  // a lone triangle
+  Mesh flagged = plain;
+  flagged.request_face_status();
+  const std::size_t faces = plain.n_faces(), vertices = plain.n_vertices();
+  for (Mesh* mesh : {&plain, &flagged}) {
+    const RemovedPieces removed = remove_small_pieces(*mesh, 1);
+    EXPECT_EQ(removed.faces, 1u);
+    EXPECT_EQ(removed.vertices, 3u);
+    EXPECT_EQ(mesh->n_faces(), faces - 1);
+    EXPECT_EQ(mesh->n_vertices(), vertices - 3);
+    EXPECT_FALSE(mesh->has_vertex_status());
+    EXPECT_FALSE(mesh->has_edge_status());
+    EXPECT_FALSE(mesh->has_halfedge_status());
+  }
+  EXPECT_FALSE(plain.has_face_status());
+  EXPECT_TRUE(flagged.has_face_status());
+}
+
 // mesh_pieces against a union-find over the edges: the same pieces (numbered by their lowest
 // face), each with its faces and its area, on a mesh of many pieces, some touching only at a
 // vertex (which does not join them), with a deleted face.
@@ -135,6 +159,9 @@ TEST(Pieces, AreTheFacesJoinedThroughEdgesAsAUnionFindFindsThem) {
     if (copy == 1)
       mesh.add_face(b, mesh.add_vertex({4.5, -1.0, 0.0}), mesh.add_vertex({4.0, -1.0, 0.0}));
   }
+  mesh.request_face_status();  // a library user's mesh with OpenMesh's flags, one face deleted
+  mesh.request_edge_status();
+  mesh.request_halfedge_status();
   mesh.delete_face(FaceHandle(7), false);
   std::vector<int> parent(mesh.n_faces());
   for (std::size_t f = 0; f < parent.size(); ++f) parent[f] = static_cast<int>(f);

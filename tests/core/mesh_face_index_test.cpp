@@ -46,6 +46,9 @@ Box box_around(const Point& centre, double half) {
 // across their edges and far from them, before and after entries are added.
 TEST(MeshFaceIndex, FindsWhatAScanOfAllFacesFinds) {
   Mesh mesh = testing::make_grid(40, [](double x, double y) { return 0.1 * std::sin(9 * x * y); });
+  mesh.request_face_status();  // a library user's mesh with OpenMesh's flags, one face deleted
+  mesh.request_edge_status();
+  mesh.request_halfedge_status();
   mesh.delete_face(FaceHandle(5), false);  // a deleted face is not indexed
   const int indexed = static_cast<int>(mesh.n_faces());
   const std::vector<Box> regions{box_around({0.2, 0.2, 0.0}, 0.05),

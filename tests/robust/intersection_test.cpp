@@ -173,6 +173,9 @@ TEST(PatchIntersections, SmoothingThatWouldCrossTheMeshIsUndone) {
       << fills[0].smoothing_note;
   EXPECT_EQ(count_patch_intersections(mesh, fills[0].patch), 0u);
   EXPECT_EQ(check_fill_guarantees(before, holes, mesh, fills), "");
+  // The undo deleted the smoothed patch with status flags requested for it, and released them.
+  EXPECT_FALSE(mesh.has_vertex_status() || mesh.has_edge_status() || mesh.has_halfedge_status() ||
+               mesh.has_face_status());
 }
 
 // Where along the line p + t n the patch's surface is (the smallest |t|); nothing if it misses.

@@ -3,6 +3,9 @@
 // beyond positions (colours, normals, any PLY property) rides along as named OpenMesh properties
 // ("holefill:attributes", "holefill:v:NAME", "holefill:f:NAME"): see attributes.h; code that
 // re-adds elements should copy all properties (copy_all_properties) so they survive.
+// A Mesh carries no status flags (OpenMesh's 4 bytes on every element, a quarter of a big mesh):
+// code that deletes elements requests them for the deletion's duration (deletion_flags.h), so
+// between operations no element is marked deleted and the iterators skip none.
 #pragma once
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -12,10 +15,6 @@ namespace holefill {
 struct MeshTraits : OpenMesh::DefaultTraits {
   using Point = OpenMesh::Vec3d;
   using Normal = OpenMesh::Vec3d;
-  VertexAttributes(OpenMesh::Attributes::Status);
-  FaceAttributes(OpenMesh::Attributes::Status);
-  EdgeAttributes(OpenMesh::Attributes::Status);
-  HalfedgeAttributes(OpenMesh::Attributes::Status);
 };
 
 using Mesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
