@@ -1,6 +1,7 @@
 #include "mesh_from_triangles.h"
 
 #include <algorithm>
+#include <numeric>
 
 namespace holefill::io {
 namespace {
@@ -107,13 +108,12 @@ void link_boundaries(Mesh& mesh) {
 }
 
 // The halfedges of the triangles' edges, numbered as OpenMesh numbers them when the edges are
-// made in the order of their uses: edge e is made from the corner edge_corner[e] (3 t + c: the
-// edge from corner c of triangle t to the next), whose halfedge is 2 e; the other triangle on the
-// edge gets 2 e + 1. Computed before the mesh exists, so that the uses (16 bytes each, three per
-// triangle) are freed before the mesh's arrays are made.
+// made in the order of their uses: edge e is made from its first use, whose halfedge is 2 e; the
+// other triangle on the edge gets 2 e + 1. Computed before the mesh exists, so that the uses (16
+// bytes each, three per triangle) are freed before the mesh's arrays are made.
 struct HalfedgeNumbers {
-  std::vector<int> of_corner;    // per corner 3 t + c: the halfedge from corner c to c + 1
-  std::vector<int> edge_corner;  // per edge: the corner it is made from
+  std::vector<int> of_corner;  // per corner 3 t + c: the halfedge from corner c to c + 1
+  std::size_t edges = 0;
 };
 
 HalfedgeNumbers halfedge_numbers(const std::vector<Triangle>& triangles,
@@ -122,18 +122,13 @@ HalfedgeNumbers halfedge_numbers(const std::vector<Triangle>& triangles,
       known_uses.empty() ? edge_uses(triangles) : std::move(known_uses);
   HalfedgeNumbers numbers;
   numbers.of_corner.resize(3 * triangles.size());
-  numbers.edge_corner.reserve(uses.size());
   for_each_edge(uses, [&](std::size_t i, std::size_t j) {
     const int a = static_cast<int>(uses[i].edge >> 32);
     const int b = static_cast<int>(uses[i].edge & 0xFFFFFFFFu);
-    const int t = uses[i].triangle;
-    const int corner = 3 * t + corner_of_edge(triangles[t], a, b);
-    const int halfedge = 2 * static_cast<int>(numbers.edge_corner.size());
-    numbers.edge_corner.push_back(corner);
-    numbers.of_corner[corner] = halfedge;
-    if (j - i == 2) {
-      const int other = uses[i + 1].triangle;
-      numbers.of_corner[3 * other + corner_of_edge(triangles[other], a, b)] = halfedge + 1;
+    const int halfedge = 2 * static_cast<int>(numbers.edges++);
+    for (std::size_t k = i; k < j; ++k) {
+      const int t = uses[k].triangle;
+      numbers.of_corner[3 * t + corner_of_edge(triangles[t], a, b)] = halfedge + (k == i ? 0 : 1);
     }
   });
   return numbers;
@@ -147,14 +142,7 @@ HalfedgeNumbers halfedge_numbers(const std::vector<Triangle>& triangles,
 // directions, and a vertex has either one closed fan or only open ones.
 void add_triangles(Mesh& mesh, const std::vector<Triangle>& triangles,
                    const HalfedgeNumbers& numbers) {
-  mesh.resize(mesh.n_vertices(), numbers.edge_corner.size(), triangles.size());
-  for (std::size_t e = 0; e < numbers.edge_corner.size(); ++e) {
-    const Triangle& t = triangles[numbers.edge_corner[e] / 3];
-    const int c = numbers.edge_corner[e] % 3;
-    const auto h = static_cast<int>(2 * e);
-    mesh.set_vertex_handle(HalfedgeHandle(h), VertexHandle(t[(c + 1) % 3]));
-    mesh.set_vertex_handle(HalfedgeHandle(h + 1), VertexHandle(t[c]));
-  }
+  mesh.resize(mesh.n_vertices(), numbers.edges, triangles.size());
   auto halfedge = [&numbers](std::size_t corner) {
     return HalfedgeHandle(numbers.of_corner[corner]);
   };
@@ -164,6 +152,11 @@ void add_triangles(Mesh& mesh, const std::vector<Triangle>& triangles,
     mesh.set_halfedge_handle(f, halfedge(3 * t + 2));
     for (int c = 0; c < 3; ++c) {
       const HalfedgeHandle h = halfedge(3 * t + c);
+      mesh.set_vertex_handle(h, VertexHandle(triangles[t][(c + 1) % 3]));
+      // The edge's first use (2 e) also gives its other halfedge, which may have no face.
+      if (h.idx() % 2 == 0) {
+        mesh.set_vertex_handle(HalfedgeHandle(h.idx() + 1), VertexHandle(triangles[t][c]));
+      }
       mesh.set_face_handle(h, f);
       mesh.set_next_halfedge_handle(h, halfedge(3 * t + (c + 1) % 3));
       mesh.set_halfedge_handle(mesh.from_vertex_handle(h), h);
@@ -176,16 +169,17 @@ void add_triangles(Mesh& mesh, const std::vector<Triangle>& triangles,
 std::size_t with_room(std::size_t count) { return count + count / 8 + 64; }
 
 // The triangles with those marked in `detached` last, each on its own copies of its corners
-// (appended to `positions`); says where the faces and the copies came from in `sources`.
+// (appended to `positions`); says where the faces and the copies came from in `sources` (when
+// given).
 std::vector<Triangle> detach(const std::vector<Triangle>& triangles,
                              const std::vector<char>& detached, std::vector<Point>& positions,
-                             MeshSources& sources, std::size_t& count) {
+                             MeshSources* sources, std::size_t& count) {
   std::vector<Triangle> kept, apart;
   std::vector<int> apart_source;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     if (!detached[t]) {
       kept.push_back(triangles[t]);
-      sources.face.push_back(static_cast<int>(t));
+      if (sources) sources->face.push_back(static_cast<int>(t));
       continue;
     }
     Triangle copy;
@@ -193,47 +187,61 @@ std::vector<Triangle> detach(const std::vector<Triangle>& triangles,
       copy[c] = static_cast<int>(positions.size());
       const Point corner = positions[triangles[t][c]];
       positions.push_back(corner);
-      sources.vertex.push_back(triangles[t][c]);
+      if (sources) sources->vertex.push_back(triangles[t][c]);
     }
     apart.push_back(copy);
     apart_source.push_back(static_cast<int>(t));
   }
-  sources.face.insert(sources.face.end(), apart_source.begin(), apart_source.end());
+  if (sources) sources->face.insert(sources->face.end(), apart_source.begin(), apart_source.end());
   count = apart.size();
   kept.insert(kept.end(), apart.begin(), apart.end());
   return kept;
 }
 
+// The identity 0, 1, ..., count - 1.
+std::vector<int> identity(std::size_t count) {
+  std::vector<int> numbers(count);
+  std::iota(numbers.begin(), numbers.end(), 0);
+  return numbers;
+}
+
+// Gives the mesh its vertices at `positions`, which become its points array as they are (no
+// copy held beside it), with the room the mesh was given.
+void add_vertices(Mesh& mesh, std::vector<Point>& positions) {
+  const std::size_t count = positions.size();
+  positions.reserve(with_room(count));  // a copy only when the reader left no room
+  mesh.property(mesh.points_pph()).data_vector().swap(positions);
+  std::vector<Point>().swap(positions);
+  mesh.resize(count, 0, 0);
+}
+
 }  // namespace
+
+std::size_t mesh_capacity(std::size_t count) { return with_room(count); }
 
 // Faces that could not join the surface (an edge with a third face, a face turned against its
 // neighbours) are kept, on their own copies of their corners, so no data is lost.
 Mesh assemble(std::vector<Point> positions, const std::vector<Triangle>& triangles,
               const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
-              MeshSources& sources, std::vector<EdgeUse> uses) {
-  sources.vertex.resize(positions.size());
-  for (std::size_t v = 0; v < positions.size(); ++v) sources.vertex[v] = static_cast<int>(v);
-  sources.face.clear();
+              MeshSources* sources, std::vector<EdgeUse> uses) {
+  if (sources) {
+    sources->vertex = identity(positions.size());
+    sources->face.clear();
+  }
   std::vector<Triangle> rearranged;  // only when some triangles are detached
   report.faces_detached = 0;
   if (std::find(detached.begin(), detached.end(), 1) != detached.end()) {
     rearranged = detach(triangles, detached, positions, sources, report.faces_detached);
     // Detached triangles move to the end, on new vertices: the uses of the input are not theirs.
     uses = std::vector<EdgeUse>();
-  } else {
-    sources.face.resize(triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t) sources.face[t] = static_cast<int>(t);
+  } else if (sources) {
+    sources->face = identity(triangles.size());
   }
   const std::vector<Triangle>& kept = report.faces_detached ? rearranged : triangles;
   const HalfedgeNumbers numbers = halfedge_numbers(kept, std::move(uses));
   Mesh mesh;
-  mesh.reserve(with_room(positions.size()), with_room(numbers.edge_corner.size()),
-               with_room(kept.size()));
-  mesh.resize(positions.size(), 0, 0);
-  for (std::size_t v = 0; v < positions.size(); ++v) {
-    mesh.set_point(VertexHandle(static_cast<int>(v)), positions[v]);
-  }
-  std::vector<Point>().swap(positions);
+  mesh.reserve(with_room(positions.size()), with_room(numbers.edges), with_room(kept.size()));
+  add_vertices(mesh, positions);
   add_triangles(mesh, kept, numbers);
   for (std::size_t v = 0; v < original_vertices; ++v) {
     if (mesh.is_isolated(VertexHandle(static_cast<int>(v)))) ++report.isolated_vertices;

@@ -46,13 +46,19 @@ struct MeshSources {
 // copies of their corners (appended after the positions); the others must be consistent: every
 // edge used at most twice, in opposite directions, and each vertex with one closed fan or only
 // open ones. Counts report.faces_detached and the first `original_vertices` vertices no face uses
-// (report.isolated_vertices), and says in `sources` where each element came from. `uses` are the
-// triangles' edge_uses when the caller has them (empty: computed here). Linear in the triangles.
-// The positions and uses are taken so that they are freed as soon as the mesh has what it needs
-// of them; the mesh has room for an eighth more of each element (what filling adds), so that
-// adding the first patch does not copy every array into one twice its size.
+// (report.isolated_vertices), and says in `sources` (when not null: only attributes need them)
+// where each element came from. `uses` are the triangles' edge_uses when the caller has them
+// (empty: computed here). Linear in the triangles. The positions and uses are taken so that they
+// are freed as soon as the mesh has what it needs of them: the positions become the mesh's points
+// array as they are, without a copy when their capacity is at least mesh_capacity(their count).
+// The mesh has room for an eighth more of each element (what filling adds), so that adding the
+// first patch does not copy every array into one twice its size.
 Mesh assemble(std::vector<Point> positions, const std::vector<Triangle>& triangles,
               const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
-              MeshSources& sources, std::vector<EdgeUse> uses = {});
+              MeshSources* sources, std::vector<EdgeUse> uses = {});
+
+// The capacity assemble gives the mesh's arrays for `count` elements: a reader that knows how
+// many positions it will read reserves this many, so that they become the mesh's without a copy.
+std::size_t mesh_capacity(std::size_t count);
 
 }  // namespace holefill::io

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <string>
 
+#include "mesh_from_triangles.h"
 #include "ply_header.h"
 #include "readers.h"
 #include "text_scan.h"
@@ -197,7 +198,8 @@ void read_element(PlyBody& body, const PlyElement& element, const ElementColumns
                           find_property(element, {"y"}, false),
                           find_property(element, {"z"}, false)};
   const int face_list = is_face ? face_list_of(element) : -1;
-  if (is_vertex) soup.positions.reserve(element.count);  // the header's counts fit the file
+  // The header's counts fit the file; the room is what the mesh takes the positions with.
+  if (is_vertex) soup.positions.reserve(mesh_capacity(element.count));
   if (is_face) {
     soup.face_end.reserve(element.count);
     // Triangles, most often; each corner takes at least a byte of the file.

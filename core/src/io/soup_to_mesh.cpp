@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <numeric>
 #include <unordered_map>
 
 #include "holefill/triangulate.h"
@@ -110,7 +111,7 @@ std::vector<char> repeats(std::size_t count, KeyOf key_of, Hash hash) {
 }
 
 // Removes triangles with the same corners in the same cyclic order as an earlier one, and their
-// entries in `sources` (the face each triangle came from) and `corners` (when not empty).
+// entries in `sources` (the face each triangle came from) and `corners` (each when not empty).
 std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles, std::vector<int>& sources,
                                      std::vector<Triangle>& corners) {
   auto canonical = [&triangles](std::size_t i) {
@@ -131,12 +132,12 @@ std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles, std::vect
   std::size_t kept = 0;
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     if (duplicate[i]) continue;
-    sources[kept] = sources[i];
+    if (!sources.empty()) sources[kept] = sources[i];
     if (!corners.empty()) corners[kept] = corners[i];
     triangles[kept++] = triangles[i];
   }
   triangles.resize(kept);
-  sources.resize(kept);
+  if (!sources.empty()) sources.resize(kept);
   if (!corners.empty()) corners.resize(kept);
   return count;
 }
@@ -294,7 +295,8 @@ std::vector<std::pair<int, int>> fans_of_shared_vertices(const std::vector<Trian
 // touching at their tips). Each such closed fan gets its own copy of the vertex, at the same
 // position (appended to `positions`), so both surfaces stay closed. Fans with a boundary may
 // share a vertex: that is a pinched boundary, which OpenMesh stores. Returns the copies made;
-// `origin` gets the vertex each copy was made from. `uses` are the triangles' edge_uses.
+// `origin` (when not empty) gets the vertex each copy was made from. `uses` are the triangles'
+// edge_uses.
 std::size_t split_closed_fans(std::vector<Triangle>& triangles, const std::vector<EdgeUse>& uses,
                               const std::vector<char>& detached, std::vector<Point>& positions,
                               std::vector<int>& origin) {
@@ -322,7 +324,7 @@ std::size_t split_closed_fans(std::vector<Triangle>& triangles, const std::vecto
       }
       copy_of_fan[fans[k].second] = static_cast<int>(positions.size());
       positions.push_back(positions[fans[k].first]);
-      origin.push_back(fans[k].first);
+      if (!origin.empty()) origin.push_back(fans[k].first);
     }
     i = j;
   }
@@ -361,17 +363,20 @@ std::vector<char> make_consistent(std::vector<Triangle>& triangles, std::vector<
 
 }  // namespace
 
+// Where each triangle and vertex came from is followed only when the soup carries attributes to
+// copy: on a big mesh with none, those arrays were a tenth of the peak.
 Mesh build_mesh(Soup soup, LoadReport& report) {
+  const bool track_origins = has_attributes(soup);
   const bool track_corners = has_corner_values(soup);
   std::vector<Triangle> triangles;
   std::vector<Triangle> corners;   // the soup corners of each triangle, when tracked
-  std::vector<int> triangle_face;  // the polygon each triangle came from
+  std::vector<int> triangle_face;  // the polygon each triangle came from, when tracked
   triangles.reserve(soup.corners.size() / 3 + soup.face_count());
-  triangle_face.reserve(triangles.capacity());
+  if (track_origins) triangle_face.reserve(triangles.capacity());
   std::vector<int> polygon;
   for (std::size_t f = 0; f < soup.face_count(); ++f) {
     triangulate_face(soup, f, polygon, triangles, track_corners ? &corners : nullptr, report);
-    triangle_face.resize(triangles.size(), static_cast<int>(f));
+    if (track_origins) triangle_face.resize(triangles.size(), static_cast<int>(f));
   }
   // The polygons are triangles now.
   std::vector<int>().swap(soup.corners);
@@ -383,16 +388,19 @@ Mesh build_mesh(Soup soup, LoadReport& report) {
   }
   std::vector<Point> positions = std::move(soup.positions);
   const std::size_t original_vertices = positions.size();
-  std::vector<int> origin(positions.size());
-  for (std::size_t v = 0; v < origin.size(); ++v) origin[v] = static_cast<int>(v);
+  std::vector<int> origin;  // the soup position of each vertex, when tracked
+  if (track_origins) {
+    origin.resize(positions.size());
+    std::iota(origin.begin(), origin.end(), 0);
+  }
   std::vector<EdgeUse> uses;
   const std::vector<char> detached =
       make_consistent(triangles, corners, positions, origin, report, uses);
   MeshSources sources;
   Mesh mesh = assemble(std::move(positions), triangles, detached, original_vertices, report,
-                       sources, std::move(uses));
+                       track_origins ? &sources : nullptr, std::move(uses));
   keep_file_format(soup, mesh);
-  if (!has_attributes(soup)) return mesh;
+  if (!track_origins) return mesh;
   SoupOrigins origins;
   origins.vertex.reserve(sources.vertex.size());
   for (const int v : sources.vertex) origins.vertex.push_back(origin[v]);
