@@ -86,7 +86,7 @@ FillCounts report_problems(const std::vector<HoleFill>& fills, const std::string
 bool write_results(const Mesh& mesh, const ReportInput& report, const FillArguments& a,
                    const Streams& streams) {
   try {
-    write_output(a.output, mesh_output_bytes(mesh, a), streams.out);
+    write_mesh_output(mesh, a, streams.out);
   } catch (const FileError& e) {
     streams.err << "holefill: " << e.what() << "; the filled mesh was not written"
                 << (a.report_path.empty() ? "" : ", nor the report") << "\n";

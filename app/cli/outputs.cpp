@@ -77,8 +77,9 @@ void write_output(const std::string& path, const std::string& bytes, std::ostrea
   if (!out) throw FileError("standard output", "could not be written" + last_system_error());
 }
 
-std::string mesh_output_bytes(const Mesh& mesh, const FillArguments& a) {
-  return mesh_to_bytes(mesh, mesh_output_name(a));
+void write_mesh_output(const Mesh& mesh, const FillArguments& a, std::ostream& out) {
+  if (a.output != "-") return save_mesh(mesh, a.output);
+  write_output(a.output, mesh_to_bytes(mesh, mesh_output_name(a)), out);
 }
 
 std::vector<std::string> mesh_output_losses(const Mesh& mesh, const FillArguments& a) {

@@ -19,8 +19,9 @@ void check_outputs(const FillArguments& arguments);
 // Writes `bytes` to `path`, or to `out` when `path` is "-". Throws FileError with the reason.
 void write_output(const std::string& path, const std::string& bytes, std::ostream& out);
 
-// The mesh's file in the format of -o's extension, or of --format for "-".
-std::string mesh_output_bytes(const Mesh& mesh, const FillArguments& arguments);
+// Writes the mesh's file in the format of -o's extension (save_mesh: as it is made, never whole
+// in memory), or of --format to standard output for "-"; throws FileError as write_output does.
+void write_mesh_output(const Mesh& mesh, const FillArguments& arguments, std::ostream& out);
 
 // What that file leaves out of what the mesh carries (io.h: attributes_not_written).
 std::vector<std::string> mesh_output_losses(const Mesh& mesh, const FillArguments& arguments);

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -78,19 +79,57 @@ void check_name_length(const fs::path& path, const fs::path& target) {
   if (!S_ISDIR(folder.st_mode)) fail_with_errno(path, ENOTDIR);
 }
 
-void write_directly(const fs::path& path, const fs::path& target, std::string_view bytes) {
-  const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
-  if (fd < 0) fail_with_errno(path, errno);
-  int error = detail::write_all(fd, bytes.data(), bytes.size());
-  if (::close(fd) != 0 && error == 0) error = errno;
+using Producer = std::function<void(const ByteWriter&)>;
+
+// Writes what `produce` makes to `fd`, adding its size to `size`: 0, or the first error (errno),
+// after which the rest is made but not written.
+int write_produced(int fd, const Producer& produce, std::uint64_t& size) {
+  int error = 0;
+  produce([&](std::string_view piece) {
+    if (error == 0) error = detail::write_all(fd, piece.data(), piece.size());
+    size += piece.size();
+  });
+  return error;
+}
+
+// Opens `target` for writing in place; closes it when it goes, even when `produce` throws.
+class OpenForWriting {
+ public:
+  OpenForWriting(const fs::path& path, const fs::path& target)
+      : fd_(::open(target.c_str(), O_WRONLY | O_CLOEXEC)) {
+    if (fd_ < 0) fail_with_errno(path, errno);
+  }
+  ~OpenForWriting() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  OpenForWriting(const OpenForWriting&) = delete;
+  OpenForWriting& operator=(const OpenForWriting&) = delete;
+  int descriptor() const { return fd_; }
+  // Closes the file: 0, or the error (errno).
+  int close() {
+    const int closed = ::close(fd_);
+    fd_ = -1;
+    return closed != 0 ? errno : 0;
+  }
+
+ private:
+  int fd_;
+};
+
+void write_directly(const fs::path& path, const fs::path& target, const Producer& produce) {
+  OpenForWriting file(path, target);
+  std::uint64_t size = 0;
+  int error = write_produced(file.descriptor(), produce, size);
+  if (const int closed = file.close(); error == 0) error = closed;
   if (error != 0) fail_with_errno(path, error);
 }
 
 // Writes the bytes to a fresh temporary file beside `target`, complete and on disk.
-void write_partial(detail::PartialFile& partial, const fs::path& path, std::string_view bytes,
+void write_partial(detail::PartialFile& partial, const fs::path& path, const Producer& produce,
                    const std::optional<struct stat>& existing) {
   const int fd = partial.descriptor();
-  int error = detail::write_all(fd, bytes.data(), bytes.size());
+  std::uint64_t size = 0;
+  int error = write_produced(fd, produce, size);
   if (error == 0 && existing) {
     if (::fchmod(fd, existing->st_mode & 07777) != 0) error = errno;
     if (::fchown(fd, existing->st_uid, existing->st_gid) != 0) {
@@ -102,34 +141,39 @@ void write_partial(detail::PartialFile& partial, const fs::path& path, std::stri
 }
 
 // A file with several names is rewritten where it is, once the bytes were shown to fit on disk.
-void rewrite_in_place(const fs::path& path, const fs::path& target, std::string_view bytes) {
-  const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
-  if (fd < 0) fail_with_errno(path, errno);
-  int error = detail::write_all(fd, bytes.data(), bytes.size());
-  if (error == 0 && ::ftruncate(fd, static_cast<off_t>(bytes.size())) != 0) error = errno;
+void rewrite_in_place(const fs::path& path, const fs::path& target, const Producer& produce) {
+  OpenForWriting file(path, target);
+  const int fd = file.descriptor();
+  std::uint64_t size = 0;
+  int error = write_produced(fd, produce, size);
+  if (error == 0 && ::ftruncate(fd, static_cast<off_t>(size)) != 0) error = errno;
   if (error == 0 && ::fsync(fd) != 0) error = errno;
-  if (::close(fd) != 0 && error == 0) error = errno;
+  if (const int closed = file.close(); error == 0) error = closed;
   if (error != 0) fail_with_errno(path, error);
 }
 
 }  // namespace
 
 void write_output_file(const fs::path& path, std::string_view bytes) {
-  if (is_special_file(path)) return write_directly(path, path, bytes);
+  write_output_file(path, [bytes](const ByteWriter& write) { write(bytes); });
+}
+
+void write_output_file(const fs::path& path, const Producer& produce) {
+  if (is_special_file(path)) return write_directly(path, path, produce);
   const fs::path target = resolve_links(path);
   const auto existing = existing_target(path, target);
   check_name_length(path, target);
   const bool has_other_names = existing && existing->st_nlink > 1;
   {
     detail::PartialFile partial(path, folder_of(target), 0666);
-    write_partial(partial, path, bytes, existing);
+    write_partial(partial, path, produce, existing);
     if (!has_other_names) {
       if (::rename(partial.path().c_str(), target.c_str()) != 0) fail_with_errno(path, errno);
       partial.renamed();
       return;
     }
   }  // the temporary is removed: its space is free again for the rewrite
-  rewrite_in_place(path, target, bytes);
+  rewrite_in_place(path, target, produce);
 }
 
 void check_output_file(const fs::path& path) {

@@ -179,6 +179,26 @@ TEST_F(IoTest, ALoadedMeshHasRoomForAPatch) {
   }
 }
 
+// save_mesh writes a file in pieces as it is made: a file of several pieces (a megabyte each) is
+// the one mesh_to_bytes gives whole and reads back to the same mesh, in each format written so
+// (OBJ is written whole).
+TEST_F(IoTest, SavedFilesMadeInPiecesAreTheWholeFile) {
+  const Mesh mesh = testing::make_icosphere(6);  // 40,962 vertices: megabytes of text
+  for (const std::string ext : {".ply", ".off", ".stl"}) {
+    const fs::path path = dir_ / ("big" + ext);
+    save_mesh(mesh, path);
+    std::ifstream in(path, std::ios::binary);
+    const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(file, mesh_to_bytes(mesh, path)) << ext;
+    EXPECT_GT(file.size(), std::size_t{1} << 20) << ext;
+    const Mesh back = load_mesh(path);
+    ASSERT_EQ(back.n_faces(), mesh.n_faces()) << ext;
+    if (ext == ".stl") continue;  // floats, welded
+    ASSERT_EQ(back.n_vertices(), mesh.n_vertices()) << ext;
+    for (const auto v : mesh.vertices()) ASSERT_EQ(back.point(v), mesh.point(v)) << ext;
+  }
+}
+
 // OpenMesh's status flags (4 bytes on every element) are not part of a loaded mesh: deleting code
 // requests them for its deletion (deletion_flags.h).
 TEST(IoMeshBuilding, ALoadedMeshCarriesNoStatusFlags) {

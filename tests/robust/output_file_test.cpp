@@ -99,6 +99,49 @@ TEST_F(OutputFile, KeepsHardLinksTogether) {
   EXPECT_EQ(files_in(dir_), 2u);
 }
 
+// A file made in pieces: every piece in order, to a new file, over an old one, to both names of a
+// hard-linked file (made twice: a first time into a temporary, then in place, shortening it).
+TEST_F(OutputFile, WritesWhatAProducerHandsOnPieceByPiece) {
+  int calls = 0;
+  auto produce = [&calls](const ByteWriter& write) {
+    ++calls;
+    for (int i = 0; i < 1000; ++i) write("piece " + std::to_string(i) + "\n");
+  };
+  std::string expected;
+  for (int i = 0; i < 1000; ++i) expected += "piece " + std::to_string(i) + "\n";
+  write_output_file(dir_ / "new.ply", produce);
+  EXPECT_EQ(contents(dir_ / "new.ply"), expected);
+  EXPECT_EQ(calls, 1);
+  const fs::path file = write("a.ply", expected + "and a longer tail than the new file has");
+  fs::create_hard_link(file, dir_ / "b.ply");
+  write_output_file(file, produce);
+  EXPECT_EQ(contents(dir_ / "b.ply"), expected);
+  EXPECT_EQ(calls, 3);
+  EXPECT_EQ(files_in(dir_), 3u);
+}
+
+// A producer that fails half-way (out of memory, a bad value) leaves the old file as it was and
+// no temporary behind; a full disk found in the middle is reported as for a whole buffer.
+TEST_F(OutputFile, AProducerThatThrowsChangesNothing) {
+  write("a.ply", "old");
+  auto failing = [](const ByteWriter& write) {
+    write("the first half");
+    throw std::runtime_error("no more");
+  };
+  EXPECT_THROW(write_output_file(dir_ / "a.ply", failing), std::runtime_error);
+  EXPECT_EQ(contents(dir_ / "a.ply"), "old");
+  EXPECT_EQ(files_in(dir_), 1u);
+  fs::create_symlink("/dev/full", dir_ / "full.ply");
+  try {
+    write_output_file(dir_ / "full.ply", [](const ByteWriter& write) {
+      for (int i = 0; i < 100; ++i) write(std::string(100000, 'x'));
+    });
+    ADD_FAILURE() << "a full device took the bytes";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos);
+  }
+}
+
 TEST_F(OutputFile, WritesAPipeDirectly) {
   const fs::path fifo = dir_ / "pipe";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);

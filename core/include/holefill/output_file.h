@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string_view>
 
 namespace holefill {
@@ -23,6 +24,17 @@ namespace holefill {
 // directory, a loop of symbolic links. Nothing at `path` changes then, except a non-regular file
 // that was partly written.
 void write_output_file(const std::filesystem::path& path, std::string_view bytes);
+
+// Hands a file's bytes on, one piece at a time, in order.
+using ByteWriter = std::function<void(std::string_view)>;
+
+// write_output_file with the bytes `produce` hands to the ByteWriter it is given, piece by piece,
+// so that a big file never exists whole in memory. `produce` may be called twice (a file with
+// other hard links is first written to a temporary file) and must give the same bytes each time.
+// What it throws passes through; nothing at `path` has changed then, except a non-regular file
+// that was partly written (or, should the second call of a rewrite in place throw, that file).
+void write_output_file(const std::filesystem::path& path,
+                       const std::function<void(const ByteWriter&)>& produce);
 
 // Checks before any work that write_output_file(path, ...) can succeed, as far as can be known
 // without writing the bytes: the folder exists and accepts a new file, and `path` is not a

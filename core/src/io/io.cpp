@@ -154,23 +154,40 @@ Mesh load_mesh(const fs::path& path, LoadReport* report) {
   return mesh_of_soup(std::move(soup), path, out);
 }
 
-std::string mesh_to_bytes(const Mesh& mesh, const fs::path& name) {
+// The extension of `name`, lower case, when it is a format save_mesh writes; else throws
+// FileError naming `name`.
+std::string writable_extension(const fs::path& name) {
   const std::string ext = lower_extension(name);
   const auto& writable = writable_extensions();
   if (std::find(writable.begin(), writable.end(), ext) == writable.end()) {
     throw FileError(name, "cannot write '" + ext + "' files (use .obj, .off, .ply or .stl)");
   }
+  return ext;
+}
+
+// Hands `write` the file save_mesh writes at `name` (whose extension was checked).
+void write_mesh(const Mesh& mesh, const fs::path& name, const ByteWriter& write) {
+  const std::string ext = lower_extension(name);
   // Indices in the file must count live elements only.
   if (has_deleted_elements(mesh)) {
     Mesh compacted = mesh;
     compacted.garbage_collection();
-    return io::mesh_file_bytes(compacted, ext, name);
+    return io::write_mesh_file(compacted, ext, name, write);
   }
-  return io::mesh_file_bytes(mesh, ext, name);
+  io::write_mesh_file(mesh, ext, name, write);
 }
 
+std::string mesh_to_bytes(const Mesh& mesh, const fs::path& name) {
+  writable_extension(name);
+  std::string bytes;
+  write_mesh(mesh, name, [&bytes](std::string_view piece) { bytes += piece; });
+  return bytes;
+}
+
+// The file is written as it is made, a piece at a time, never whole in memory.
 void save_mesh(const Mesh& mesh, const fs::path& path) {
-  write_output_file(path, mesh_to_bytes(mesh, path));
+  writable_extension(path);
+  write_output_file(path, [&](const ByteWriter& write) { write_mesh(mesh, path, write); });
 }
 
 }  // namespace holefill

@@ -6,8 +6,34 @@
 #include <string>
 
 #include "holefill/mesh.h"
+#include "holefill/output_file.h"
 
 namespace holefill::io {
+
+// A file's bytes as a writer makes them: appended to `text`, and handed on to the ByteWriter in
+// pieces of about a megabyte as records end, so that a big file never exists whole in memory
+// (its text was a sixth of the peak of filling a 1.4M-face mesh).
+class PieceOut {
+ public:
+  explicit PieceOut(const ByteWriter& write) : write_(write) {
+    text.reserve(kPieceBytes + kPieceBytes / 4);
+  }
+  // After each record: hands the text on once it is a piece's size.
+  void end_record() {
+    if (text.size() >= kPieceBytes) flush();
+  }
+  // Hands on what is left (at the end).
+  void flush() {
+    write_(text);
+    text.clear();
+  }
+
+  std::string text;
+
+ private:
+  static constexpr std::size_t kPieceBytes = std::size_t{1} << 20;
+  const ByteWriter& write_;
+};
 
 inline void append_number(std::string& out, double value) {
   char text[32];
@@ -35,9 +61,11 @@ inline void reserve_records(std::string& out, const Mesh& mesh, std::size_t vert
               mesh.n_faces() * (25 * face_values + 1));
 }
 
-// Vertices as "<prefix>x y z", then whatever `after` appends to the line.
-template <class After>
-void append_vertices(const Mesh& mesh, std::string& out, const char* prefix, After&& after) {
+// Vertices as "<prefix>x y z", then whatever `after` appends to the line; `line_done` is called
+// after each line.
+template <class After, class LineDone>
+void append_vertices(const Mesh& mesh, std::string& out, const char* prefix, After&& after,
+                     LineDone&& line_done) {
   for (const auto v : mesh.vertices()) {
     const Point& p = mesh.point(v);
     out += prefix;
@@ -47,13 +75,20 @@ void append_vertices(const Mesh& mesh, std::string& out, const char* prefix, Aft
     }
     after(v);
     out += '\n';
+    line_done();
   }
 }
 
-// Faces as "<prefix>a b c" with vertex indices counted from `base`, then whatever `after`
-// appends to the line.
 template <class After>
-void append_faces(const Mesh& mesh, std::string& out, const char* prefix, int base, After&& after) {
+void append_vertices(const Mesh& mesh, std::string& out, const char* prefix, After&& after) {
+  append_vertices(mesh, out, prefix, after, [] {});
+}
+
+// Faces as "<prefix>a b c" with vertex indices counted from `base`, then whatever `after`
+// appends to the line; `line_done` is called after each line.
+template <class After, class LineDone>
+void append_faces(const Mesh& mesh, std::string& out, const char* prefix, int base, After&& after,
+                  LineDone&& line_done) {
   for (const auto f : mesh.faces()) {
     out += prefix;
     const char* separator = "";
@@ -64,7 +99,13 @@ void append_faces(const Mesh& mesh, std::string& out, const char* prefix, int ba
     }
     after(f);
     out += '\n';
+    line_done();
   }
+}
+
+template <class After>
+void append_faces(const Mesh& mesh, std::string& out, const char* prefix, int base, After&& after) {
+  append_faces(mesh, out, prefix, base, after, [] {});
 }
 
 }  // namespace holefill::io

@@ -121,11 +121,10 @@ std::string ply_header(const Mesh& mesh, const AttributeLayout& layout) {
 }
 
 // PLY in the layout's encoding and types (ASCII doubles when the mesh came from elsewhere).
-std::string ply_bytes(const Mesh& mesh) {
+void write_ply(const Mesh& mesh, PieceOut& out) {
   const AttributeLayout layout = attribute_layout(mesh);
-  std::string out = ply_header(mesh, layout);
-  reserve_records(out, mesh, 3 + layout.vertex.size(), 4 + layout.face.size());
-  ValueWriter writer(out, layout.encoding);
+  out.text = ply_header(mesh, layout);
+  ValueWriter writer(out.text, layout.encoding);
   const auto vertex_values = vertex_properties(mesh, layout);
   for (const auto v : mesh.vertices()) {
     for (int axis = 0; axis < 3; ++axis) {
@@ -137,6 +136,7 @@ std::string ply_bytes(const Mesh& mesh) {
       writer.write(mesh.property(vertex_values[a], v), layout.vertex[a].type);
     }
     writer.end_record();
+    out.end_record();
   }
   const auto face_values = face_properties(mesh, layout);
   for (const auto f : mesh.faces()) {
@@ -150,13 +150,13 @@ std::string ply_bytes(const Mesh& mesh) {
       writer.write(mesh.property(face_values[a], f), layout.face[a].type);
     }
     writer.end_record();
+    out.end_record();
   }
-  return out;
 }
 
 // OFF; COFF, NOFF or CNOFF with the colours (in their own type: 0-255 or 0-1) and normals the
 // mesh carries, in the order the format puts them: position, normal, colour.
-std::string off_bytes(const Mesh& mesh) {
+void write_off(const Mesh& mesh, PieceOut& out) {
   const AttributeLayout layout = attribute_layout(mesh);
   std::vector<std::pair<OpenMesh::VPropHandleT<double>, ScalarType>> normal, colour;
   for (const auto& a : layout.vertex) {
@@ -172,40 +172,44 @@ std::string off_bytes(const Mesh& mesh) {
   }
   if (normal.size() != 3) normal.clear();
   if (colour.size() < 3) colour.clear();
-  std::string out = std::string(colour.empty() ? "" : "C") + (normal.empty() ? "" : "N") + "OFF\n" +
-                    std::to_string(mesh.n_vertices()) + ' ' + std::to_string(mesh.n_faces()) +
-                    " 0\n";
-  reserve_records(out, mesh, 3 + normal.size() + colour.size(), 4 + layout.face.size());
-  ValueWriter writer(out, FileEncoding::Ascii);
-  append_vertices(mesh, out, "", [&](VertexHandle v) {
-    for (const auto& list : {normal, colour}) {
-      for (const auto& [property, type] : list) {
-        writer.separate();
-        writer.write(mesh.property(property, v), type);
-      }
-    }
-  });
+  out.text = std::string(colour.empty() ? "" : "C") + (normal.empty() ? "" : "N") + "OFF\n" +
+             std::to_string(mesh.n_vertices()) + ' ' + std::to_string(mesh.n_faces()) + " 0\n";
+  ValueWriter writer(out.text, FileEncoding::Ascii);
+  auto line_done = [&out] { out.end_record(); };
+  append_vertices(
+      mesh, out.text, "",
+      [&](VertexHandle v) {
+        for (const auto& list : {normal, colour}) {
+          for (const auto& [property, type] : list) {
+            writer.separate();
+            writer.write(mesh.property(property, v), type);
+          }
+        }
+      },
+      line_done);
   // Face attributes other than colours have no place in OFF.
   const bool only_colours = std::all_of(layout.face.begin(), layout.face.end(), [](const auto& a) {
     return a.name == "red" || a.name == "green" || a.name == "blue" || a.name == "alpha";
   });
   const auto face_colour =
       only_colours ? face_properties(mesh, layout) : std::vector<OpenMesh::FPropHandleT<double>>{};
-  append_faces(mesh, out, "3 ", 0, [&](FaceHandle f) {
-    for (std::size_t a = 0; a < face_colour.size(); ++a) {
-      writer.separate();
-      writer.write(mesh.property(face_colour[a], f), layout.face[a].type);
-    }
-  });
-  return out;
+  append_faces(
+      mesh, out.text, "3 ", 0,
+      [&](FaceHandle f) {
+        for (std::size_t a = 0; a < face_colour.size(); ++a) {
+          writer.separate();
+          writer.write(mesh.property(face_colour[a], f), layout.face[a].type);
+        }
+      },
+      line_done);
 }
 
 // Binary STL: an 80-byte header, the count, and per triangle its normal, corners and 2 spare
 // bytes, all little-endian floats.
-std::string stl_bytes(const Mesh& mesh) {
-  std::string out = "binary STL written by holefill";
-  out.resize(80, ' ');
-  ValueWriter writer(out, FileEncoding::BinaryLittleEndian);
+void write_stl(const Mesh& mesh, PieceOut& out) {
+  out.text = "binary STL written by holefill";
+  out.text.resize(80, ' ');
+  ValueWriter writer(out.text, FileEncoding::BinaryLittleEndian);
   writer.write(static_cast<double>(mesh.n_faces()), ScalarType::UInt32);
   for (const auto f : mesh.faces()) {
     const Point normal = mesh.calc_face_normal(f);
@@ -214,18 +218,24 @@ std::string stl_bytes(const Mesh& mesh) {
       for (int axis = 0; axis < 3; ++axis) writer.write(mesh.point(v)[axis], ScalarType::Float32);
     }
     writer.write(0.0, ScalarType::UInt16);
+    out.end_record();
   }
-  return out;
 }
 
 }  // namespace
 
-std::string mesh_file_bytes(const Mesh& mesh, const std::string& ext,
-                            const std::filesystem::path& output) {
-  if (ext == ".obj") return obj_bytes(mesh, output);
-  if (ext == ".off") return off_bytes(mesh);
-  if (ext == ".stl") return stl_bytes(mesh);
-  return ply_bytes(mesh);
+void write_mesh_file(const Mesh& mesh, const std::string& ext, const std::filesystem::path& output,
+                     const ByteWriter& write) {
+  if (ext == ".obj") return write(obj_bytes(mesh, output));
+  PieceOut out(write);
+  if (ext == ".off") {
+    write_off(mesh, out);
+  } else if (ext == ".stl") {
+    write_stl(mesh, out);
+  } else {
+    write_ply(mesh, out);
+  }
+  out.flush();
 }
 
 }  // namespace holefill::io

@@ -9,14 +9,16 @@
 #include <string>
 
 #include "holefill/mesh.h"
+#include "holefill/output_file.h"
 
 namespace holefill::io {
 
-// The file for `mesh` in the format `ext` names (".obj", ".off", ".stl"; anything else is
-// written as PLY), to be written at `output` (an OBJ names its material libraries relative to
-// its folder). Faces index live vertices only: the mesh must hold no deleted elements.
-std::string mesh_file_bytes(const Mesh& mesh, const std::string& ext,
-                            const std::filesystem::path& output);
+// Hands `write` the file for `mesh` in the format `ext` names (".obj", ".off", ".stl"; anything
+// else is written as PLY), to be written at `output` (an OBJ names its material libraries
+// relative to its folder): PLY, OFF and STL in pieces of about a megabyte, OBJ whole. Faces index
+// live vertices only: the mesh must hold no deleted elements.
+void write_mesh_file(const Mesh& mesh, const std::string& ext, const std::filesystem::path& output,
+                     const ByteWriter& write);
 
 // The OBJ file (obj_writer.cpp).
 std::string obj_bytes(const Mesh& mesh, const std::filesystem::path& output);
