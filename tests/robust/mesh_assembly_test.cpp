@@ -49,9 +49,9 @@ TEST(MeshAssembly, EdgeUsesAreThoseOfSortingByEdgeThenTriangle) {
   const auto expected = sorted_edge_uses(triangles);
   ASSERT_EQ(uses.size(), expected.size());
   for (std::size_t i = 0; i < uses.size(); ++i) {
-    EXPECT_EQ(uses[i].edge, expected[i].edge) << i;
-    EXPECT_EQ(uses[i].triangle, expected[i].triangle) << i;
-    EXPECT_EQ(uses[i].forward, expected[i].forward) << i;
+    EXPECT_EQ(uses[i].edge(), expected[i].edge()) << i;
+    EXPECT_EQ(uses[i].triangle(), expected[i].triangle()) << i;
+    EXPECT_EQ(uses[i].forward(), expected[i].forward()) << i;
   }
 }
 

@@ -17,7 +17,7 @@ void sort_run(std::vector<EdgeUse>::iterator begin, std::vector<EdgeUse>::iterat
   for (auto i = begin + (begin != end ? 1 : 0); i < end; ++i) {
     const EdgeUse u = *i;
     auto j = i;
-    for (; j > begin && u.edge < (j - 1)->edge; --j) *j = *(j - 1);
+    for (; j > begin && u.edge() < (j - 1)->edge(); --j) *j = *(j - 1);
     *j = u;
   }
 }
@@ -40,14 +40,14 @@ std::vector<EdgeUse> edge_uses(const std::vector<Triangle>& triangles) {
   std::vector<std::size_t> run_end(vertices + 1, 0);  // after the loop below: each run's start
   const int count = static_cast<int>(triangles.size());
   for (int t = 0; t < count; ++t) {
-    for (int c = 0; c < 3; ++c) ++run_end[(use(t, c).edge >> 32) + 1];
+    for (int c = 0; c < 3; ++c) ++run_end[use(t, c).smaller() + 1];
   }
   for (std::uint32_t v = 0; v < vertices; ++v) run_end[v + 1] += run_end[v];
   std::vector<EdgeUse> uses(3 * triangles.size());
   for (int t = 0; t < count; ++t) {
     for (int c = 0; c < 3; ++c) {
       const EdgeUse u = use(t, c);
-      uses[run_end[u.edge >> 32]++] = u;
+      uses[run_end[u.smaller()]++] = u;
     }
   }
   std::size_t begin = 0;
@@ -109,7 +109,7 @@ void link_boundaries(Mesh& mesh) {
 
 // The halfedges of the triangles' edges, numbered as OpenMesh numbers them when the edges are
 // made in the order of their uses: edge e is made from its first use, whose halfedge is 2 e; the
-// other triangle on the edge gets 2 e + 1. Computed before the mesh exists, so that the uses (16
+// other triangle on the edge gets 2 e + 1. Computed before the mesh exists, so that the uses (12
 // bytes each, three per triangle) are freed before the mesh's arrays are made.
 struct HalfedgeNumbers {
   std::vector<int> of_corner;  // per corner 3 t + c: the halfedge from corner c to c + 1
@@ -123,11 +123,10 @@ HalfedgeNumbers halfedge_numbers(const std::vector<Triangle>& triangles,
   HalfedgeNumbers numbers;
   numbers.of_corner.resize(3 * triangles.size());
   for_each_edge(uses, [&](std::size_t i, std::size_t j) {
-    const int a = static_cast<int>(uses[i].edge >> 32);
-    const int b = static_cast<int>(uses[i].edge & 0xFFFFFFFFu);
+    const int a = uses[i].smaller(), b = uses[i].larger();
     const int halfedge = 2 * static_cast<int>(numbers.edges++);
     for (std::size_t k = i; k < j; ++k) {
-      const int t = uses[k].triangle;
+      const int t = uses[k].triangle();
       numbers.of_corner[3 * t + corner_of_edge(triangles[t], a, b)] = halfedge + (k == i ? 0 : 1);
     }
   });

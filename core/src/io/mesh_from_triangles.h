@@ -12,15 +12,35 @@ namespace holefill::io {
 
 using Triangle = std::array<int, 3>;
 
-// One triangle's use of an undirected edge.
-struct EdgeUse {
-  std::uint64_t edge;  // smaller vertex index in the high half
-  int triangle;
-  bool forward;  // runs from the smaller vertex index to the larger
+// One triangle's use of an undirected edge, in 12 bytes (three per triangle: the largest array
+// while the repairs run, 16 bytes a use before).
+class EdgeUse {
+ public:
+  EdgeUse() = default;
+  // `edge`: the smaller vertex index in the high half, the larger in the low; `forward`: the
+  // triangle runs from the smaller to the larger (triangle indices are below 2^31).
+  EdgeUse(std::uint64_t edge, int triangle, bool forward)
+      : smaller_(static_cast<std::uint32_t>(edge >> 32)),
+        larger_(static_cast<std::uint32_t>(edge)),
+        triangle_(static_cast<std::uint32_t>(triangle) | (forward ? kForward : 0)) {}
+
+  std::uint64_t edge() const { return std::uint64_t{smaller_} << 32 | larger_; }
+  int smaller() const { return static_cast<int>(smaller_); }
+  int larger() const { return static_cast<int>(larger_); }
+  int triangle() const { return static_cast<int>(triangle_ & ~kForward); }
+  bool forward() const { return (triangle_ & kForward) != 0; }
+  // The triangle was flipped: it runs along the edge the other way.
+  void reverse() { triangle_ ^= kForward; }
   bool operator<(const EdgeUse& other) const {
-    return edge != other.edge ? edge < other.edge : triangle < other.triangle;
+    return edge() != other.edge() ? edge() < other.edge() : triangle() < other.triangle();
   }
+
+ private:
+  static constexpr std::uint32_t kForward = 0x80000000u;
+  std::uint32_t smaller_ = 0, larger_ = 0;
+  std::uint32_t triangle_ = 0;  // the triangle's index, kForward when it runs forward
 };
+static_assert(sizeof(EdgeUse) == 12);
 
 // Every use of an edge by a triangle, sorted by edge (then triangle).
 std::vector<EdgeUse> edge_uses(const std::vector<Triangle>& triangles);
@@ -30,7 +50,7 @@ template <class Visit>
 void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
-    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
+    while (j < uses.size() && uses[j].edge() == uses[i].edge()) ++j;
     visit(i, j);
     i = j;
   }

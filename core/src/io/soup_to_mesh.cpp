@@ -142,6 +142,20 @@ std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles, std::vect
   return count;
 }
 
+// A triangle's neighbours across its edges (up to three): how many, and for each whether it must
+// take the opposite orientation, in one byte (the count in the low two bits).
+class NeighbourFlips {
+ public:
+  int count() const { return bits_ & 3; }
+  bool must_flip(int l) const { return (bits_ >> (2 + l) & 1) != 0; }
+  void add(bool opposite) {
+    bits_ = static_cast<std::uint8_t>((bits_ | (opposite ? 1 : 0) << (2 + count())) + 1);
+  }
+
+ private:
+  std::uint8_t bits_ = 0;
+};
+
 // Flips triangles so that neighbours across every edge with exactly two triangles use it in
 // opposite directions; per connected piece, the orientation most triangles have wins. Returns
 // the number flipped, and turns `corners` (when not empty) and the triangles' `uses` (their
@@ -152,16 +166,15 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
   const int count = static_cast<int>(triangles.size());
   // Up to three neighbours per triangle, and whether each must take the opposite orientation.
   std::vector<std::array<int, 3>> neighbour(triangles.size(), {-1, -1, -1});
-  std::vector<std::array<bool, 3>> must_flip(triangles.size(), {false, false, false});
-  std::vector<int> links(triangles.size(), 0);
+  std::vector<NeighbourFlips> links(triangles.size());
   for_each_edge(uses, [&](std::size_t i, std::size_t j) {
-    if (j - i != 2 || uses[i].triangle == uses[i + 1].triangle) return;
-    const EdgeUse &a = uses[i], &b = uses[i + 1];
-    const bool opposite = a.forward == b.forward;
-    neighbour[a.triangle][links[a.triangle]] = b.triangle;
-    must_flip[a.triangle][links[a.triangle]++] = opposite;
-    neighbour[b.triangle][links[b.triangle]] = a.triangle;
-    must_flip[b.triangle][links[b.triangle]++] = opposite;
+    if (j - i != 2 || uses[i].triangle() == uses[i + 1].triangle()) return;
+    const int a = uses[i].triangle(), b = uses[i + 1].triangle();
+    const bool opposite = uses[i].forward() == uses[i + 1].forward();
+    neighbour[a][links[a].count()] = b;
+    links[a].add(opposite);
+    neighbour[b][links[b].count()] = a;
+    links[b].add(opposite);
   });
   std::vector<signed char> flip(triangles.size(), -1);
   std::vector<int> piece, queue;
@@ -176,10 +189,10 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
       const int t = queue.back();
       queue.pop_back();
       piece.push_back(t);
-      for (int l = 0; l < links[t]; ++l) {
+      for (int l = 0; l < links[t].count(); ++l) {
         const int other = neighbour[t][l];
         if (flip[other] >= 0) continue;
-        flip[other] = static_cast<signed char>(flip[t] ^ (must_flip[t][l] ? 1 : 0));
+        flip[other] = static_cast<signed char>(flip[t] ^ (links[t].must_flip(l) ? 1 : 0));
         queue.push_back(other);
       }
     }
@@ -197,7 +210,7 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
   // A flipped triangle runs along each of its edges the other way (the edges stay).
   if (flipped == 0) return 0;
   for (auto& use : uses) {
-    if (turned[use.triangle]) use.forward = !use.forward;
+    if (turned[use.triangle()]) use.reverse();
   }
   return flipped;
 }
@@ -211,14 +224,14 @@ std::vector<char> detach_non_manifold(const std::vector<EdgeUse>& uses, std::siz
     int kept = 0;
     bool first_forward = false;
     for (std::size_t k = i; k < j; ++k) {
-      if (detached[uses[k].triangle]) continue;
+      if (detached[uses[k].triangle()]) continue;
       if (kept == 0) {
-        first_forward = uses[k].forward;
+        first_forward = uses[k].forward();
         kept = 1;
-      } else if (kept == 1 && uses[k].forward != first_forward) {
+      } else if (kept == 1 && uses[k].forward() != first_forward) {
         kept = 2;
       } else {
-        detached[uses[k].triangle] = 1;
+        detached[uses[k].triangle()] = 1;
       }
     }
   });
@@ -240,10 +253,9 @@ class WedgeFans {
     for_each_edge(uses, [&](std::size_t i, std::size_t j) {
       int live[2], count = 0;
       for (std::size_t k = i; k < j; ++k) {
-        if (!detached[uses[k].triangle] && count < 2) live[count++] = uses[k].triangle;
+        if (!detached[uses[k].triangle()] && count < 2) live[count++] = uses[k].triangle();
       }
-      const int a = static_cast<int>(uses[i].edge >> 32);
-      const int b = static_cast<int>(uses[i].edge & 0xFFFFFFFFu);
+      const int a = uses[i].smaller(), b = uses[i].larger();
       if (count == 1) {
         open_[wedge(live[0], a)] = open_[wedge(live[0], b)] = 1;
       } else if (count == 2) {
