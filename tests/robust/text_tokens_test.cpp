@@ -76,9 +76,10 @@ TEST(TextTokens, OffNumbersFollowedByOtherCharactersAreRefusedAsBefore) {
             "line 4: expected a number, got '3x'");
 }
 
-// Numbers in the spellings exporters use and at the edges of the in-place fast paths (53-bit
-// mantissas, powers of ten up to 22, 18-digit integers): take_double and take_integer_prefix give
-// what from_chars gives on the whole token, bit for bit, and stop where it stops.
+// Numbers in the spellings exporters use and at the edges of exact parsing (53-bit mantissas,
+// powers of ten past 22, integers past 18 digits, signs, exponents): take_double, read in place,
+// and take_integer_prefix give what from_chars gives on the whole token, bit for bit, and stop
+// where it stops.
 std::vector<std::string> number_spellings() {
   std::mt19937_64 random(7);
   std::vector<std::string> spellings = {"0",
@@ -133,13 +134,17 @@ std::vector<std::string> number_spellings() {
     std::snprintf(text, sizeof text, "%.*e", static_cast<int>(random() % 20), magnitude);
     spellings.emplace_back(text);
     spellings.push_back(std::to_string(static_cast<long long>(random() >> (random() % 64))));
+    spellings.push_back(std::to_string(-static_cast<long long>(random() >> (random() % 64))));
+    spellings.push_back(std::to_string(random() % 100000000) + "/" + std::to_string(i));
   }
   return spellings;
 }
 
 TEST(TextTokens, NumbersReadInPlaceAreWhatFromCharsReads) {
   for (const std::string& spelling : number_spellings()) {
-    for (const std::string& text : {spelling, spelling + " 1", spelling + "x", "+" + spelling}) {
+    // Eight bytes or more from the first digit on are read eight at a time.
+    for (const std::string& text : {spelling, spelling + " 1", spelling + "x", "+" + spelling,
+                                    spelling + "/1234567 8", "+" + spelling + "\t\t\t\t\t\t\t\t"}) {
       std::string_view in_place = text, token = text;
       double fast = 0, slow = 0;
       const bool fast_read = io::take_double(in_place, fast);

@@ -4,8 +4,7 @@
 // read here instead, exactly where tinyobjloader would have called back for them, and so are
 // smoothing groups (s), which it does not report (ObjStatements serves one statement at a time,
 // hands those over, and knows which one is read):
-// - coordinates, colours, texture coordinates and normals as std::from_chars reads them
-//   (text_scan.h; short decimals by an exact fast path that gives the same doubles), because
+// - coordinates, colours, texture coordinates and normals with std::from_chars, because
 //   tinyobjloader's parser is not correctly rounded (60-68 % of 17-digit coordinates come back
 //   1-8 ulp off) and original vertices keep their values bit for bit;
 // - face corners with a strict integer parse, because tinyobjloader's atoi reads letters as 0

@@ -58,6 +58,23 @@ bool take_plain_corner(std::string_view& text, PlainCorner& corner) {
 
 }  // namespace
 
+void CornerColumn::push_other(std::size_t corner, long long index, bool relative) {
+  if (values_.size() < corner) values_.resize(corner, 0);
+  if (relative) relative_.push_back(values_.size());
+  const long long value = index + base_;
+  if (value >= kBeyond && beyond_corner_ == kNone) {
+    beyond_corner_ = values_.size();
+    beyond_index_ = index;
+  }
+  values_.push_back(value < kBeyond ? static_cast<int>(value) : kBeyond);
+}
+
+bool CornerColumn::within(std::size_t defined) const {
+  int most = 0;
+  for (const int value : values_) most = std::max(most, value);
+  return static_cast<long long>(most) - base_ < static_cast<long long>(defined);
+}
+
 void CornerColumn::clear_from(std::size_t corner) {
   if (values_.size() > corner) {
     std::fill(values_.begin() + static_cast<std::ptrdiff_t>(corner), values_.end(), 0);
@@ -231,13 +248,16 @@ long long ObjReading::resolve_other_index(long long index, std::size_t defined,
 
 void ObjReading::push_corner(const long long* written, const long long* resolved) {
   const std::size_t corner = soup_.corners.size();
-  CornerColumn* columns[] = {&vertex_, &texcoord_, &normal_};
-  for (int k = 0; k < 3; ++k) {
-    if (k > 0 && written[k] == 0) {
-      columns[k]->push_none();
-      continue;
-    }
-    columns[k]->push(corner, resolved[k], detached_ && written[k] < 0);
+  vertex_.push(corner, resolved[0], detached_ && written[0] < 0);
+  if (written[1]) {
+    texcoord_.push(corner, resolved[1], detached_ && written[1] < 0);
+  } else {
+    texcoord_.push_none();
+  }
+  if (written[2]) {
+    normal_.push(corner, resolved[2], detached_ && written[2] < 0);
+  } else {
+    normal_.push_none();
   }
 }
 
@@ -309,6 +329,7 @@ void ObjReading::read_face() {
 
 void ObjReading::check_indices(const CornerColumn& column, std::size_t defined,
                                const ObjIndexKind& kind) const {
+  if (column.within(defined)) return;
   for (std::size_t f = 0, c = 0; f < soup_.face_count(); ++f) {
     for (; c < soup_.face_end[f]; ++c) {
       if (!column.beyond(c, defined)) continue;

@@ -50,14 +50,12 @@ class CornerColumn {
   // corners before it that were not given one have none. `relative`: recorded, so that the
   // elements before the part can be added when it is appended.
   void push(std::size_t corner, long long index, bool relative) {
-    if (values_.size() < corner) values_.resize(corner, 0);
-    if (relative) relative_.push_back(values_.size());
     const long long value = index + base_;
-    if (value >= kBeyond && beyond_corner_ == kNone) {
-      beyond_corner_ = values_.size();
-      beyond_index_ = index;
+    if (values_.size() == corner && !relative && value < kBeyond) [[likely]] {
+      values_.push_back(static_cast<int>(value));
+      return;
     }
-    values_.push_back(value < kBeyond ? static_cast<int>(value) : kBeyond);
+    push_other(corner, index, relative);
   }
   // The next corner has none (nothing is stored while no corner has one).
   void push_none() {
@@ -74,6 +72,9 @@ class CornerColumn {
   long long index(std::size_t c) const {
     return values_[c] == kBeyond ? beyond_index_ : static_cast<long long>(values_[c]) - base_;
   }
+  // Whether no corner refers to an element past the first `defined` ones (one pass, where
+  // finding the first that does takes a pass over the faces).
+  bool within(std::size_t defined) const;
   // Whether corner c refers to an element past the first `defined` ones.
   bool beyond(std::size_t c, std::size_t defined) const {
     const int value = values_[c];
@@ -89,6 +90,8 @@ class CornerColumn {
 
  private:
   static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  // push() where the corners before are not all given, the index is relative or too big.
+  void push_other(std::size_t corner, long long index, bool relative);
   void forget_from(std::size_t corner) {
     while (!relative_.empty() && relative_.back() >= corner) relative_.pop_back();
     if (beyond_corner_ >= corner && beyond_corner_ != kNone) beyond_corner_ = kNone;

@@ -88,7 +88,7 @@ bool ObjStatements::next_statement() {
       }
       line = joined_;
     }
-    std::string_view rest = line.substr(0, line.find('#'));  // comments run to the line's end
+    std::string_view rest = line.substr(0, comment_start(line));  // comments run to the end
     statement_ = rest;
     const std::string_view keyword = take_token(rest);
     if (keyword.empty()) continue;
@@ -116,12 +116,28 @@ bool ObjStatements::next_statement() {
   return false;
 }
 
+std::size_t ObjStatements::comment_start(std::string_view line) {
+  if (line.data() < text_.data() || line.data() >= text_.data() + text_.size()) {
+    return line.find('#');  // a continued statement, joined
+  }
+  // The next '#' in the text, searched for again only once it is behind (files without
+  // comments are searched once).
+  const auto start = static_cast<std::size_t>(line.data() - text_.data());
+  if (!next_hash_known_ || next_hash_ < start) {
+    next_hash_ = find_from(text_, start, '#');
+    next_hash_known_ = true;
+  }
+  return next_hash_ - start < line.size() ? next_hash_ - start : std::string_view::npos;
+}
+
 bool ObjStatements::is_direct(DirectStatement& kind) const {
   if (!keyword_is_direct_) return false;
   // tinyobjloader splits the keyword off at spaces and tabs only.
   auto space_or_tab = [](char c) { return c == ' ' || c == '\t'; };
-  const std::string_view before = statement_.substr(0, keyword_.data() - statement_.data());
-  if (!std::all_of(before.begin(), before.end(), space_or_tab)) return false;
+  if (keyword_.data() != statement_.data()) {
+    const std::string_view before = statement_.substr(0, keyword_.data() - statement_.data());
+    if (!std::all_of(before.begin(), before.end(), space_or_tab)) return false;
+  }
   if (!arguments_.empty() && !space_or_tab(arguments_.front())) return false;
   kind = direct_kind_;
   // tinyobjloader reports a face only when something follows its keyword.

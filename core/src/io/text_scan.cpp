@@ -1,5 +1,7 @@
 #include "text_scan.h"
 
+#include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cstdint>
 #include <cstdlib>
@@ -69,65 +71,26 @@ bool parse_integer(std::string_view token, long long& value) {
 
 namespace {
 
-// A whole number of at most 18 digits (no overflow possible), read by a plain loop: from_chars'
-// overflow test per digit made it about a hundred instructions per face index. Returns where the
-// number stops, or null when there is none or it has more digits (then from_chars decides).
-const char* take_short_integer(const char* p, const char* end, long long& value) {
-  const bool negative = p < end && *p == '-';
-  if (negative) ++p;
-  const char* const first = p;
-  constexpr std::ptrdiff_t kMostDigits = 18;
-  unsigned long long magnitude = 0;
-  for (; p < end && *p >= '0' && *p <= '9' && p - first < kMostDigits; ++p) {
-    magnitude = magnitude * 10 + static_cast<unsigned>(*p - '0');
-  }
-  if (p == first || (p < end && *p >= '0' && *p <= '9')) return nullptr;
-  value = negative ? -static_cast<long long>(magnitude) : static_cast<long long>(magnitude);
-  return p;
-}
-
-// A decimal number that is exactly a double of at most 53 bits times a power of ten up to 22
-// (both exact): then one multiplication or division is correctly rounded and gives what
-// from_chars gives (Clinger's fast path; from_chars' own first step). Coordinates written as
-// shortest floats or with a few decimals all are. Returns where the number stops, or null when
-// it is not one (from_chars decides then).
-const char* take_short_decimal(const char* p, const char* end, double& value) {
-  const bool negative = p < end && *p == '-';
-  if (negative) ++p;
-  constexpr int kMostDigits = 19;  // what a 64-bit integer holds
-  std::uint64_t mantissa = 0;
-  int digits = 0, fraction_digits = 0;
-  for (; p < end && *p >= '0' && *p <= '9'; ++p, ++digits) {
-    mantissa = mantissa * 10 + static_cast<unsigned>(*p - '0');
-  }
-  if (p < end && *p == '.') {
-    for (++p; p < end && *p >= '0' && *p <= '9'; ++p, ++digits, ++fraction_digits) {
-      mantissa = mantissa * 10 + static_cast<unsigned>(*p - '0');
-    }
-  }
-  if (digits == 0 || digits > kMostDigits) return nullptr;
-  int exponent = -fraction_digits;
-  if (p < end && (*p == 'e' || *p == 'E')) {
-    const char* q = p + 1;
-    const bool negative_exponent = q < end && *q == '-';
-    if (q < end && (*q == '-' || *q == '+')) ++q;
-    int written = 0, exponent_digits = 0;
-    for (; q < end && *q >= '0' && *q <= '9' && exponent_digits < 4; ++q, ++exponent_digits) {
-      written = written * 10 + (*q - '0');
-    }
-    if (exponent_digits == 0 || (q < end && *q >= '0' && *q <= '9')) return nullptr;
-    exponent += negative_exponent ? -written : written;
-    p = q;
-  }
-  constexpr std::uint64_t kExactLimit = std::uint64_t{1} << 53;
-  constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-  if (mantissa > kExactLimit || exponent < -22 || exponent > 22) return nullptr;
-  const double exact = static_cast<double>(mantissa);
-  const double magnitude = exponent < 0 ? exact / kPowers[-exponent] : exact * kPowers[exponent];
-  value = negative ? -magnitude : magnitude;
-  return p;
+// The number of digits (0 to 8) that the 8 bytes at `p` start with, and their value: all eight
+// bytes tested and combined at once (SWAR, as fast_float and simdjson read eight digits), where
+// from_chars takes some ten instructions a digit; face indices are most of an OBJ's numbers.
+int leading_digits(const char* p, std::uint64_t& value) {
+  std::uint64_t bytes;
+  std::memcpy(&bytes, p, sizeof bytes);
+  if constexpr (std::endian::native != std::endian::little) bytes = __builtin_bswap64(bytes);
+  // A byte's high bit is set in either sum unless it is '0' to '9'; what a non-digit borrows or
+  // carries only reaches the bytes after it, which are not counted.
+  const std::uint64_t not_digit =
+      ((bytes - 0x3030303030303030) | (bytes + 0x4646464646464646)) & 0x8080808080808080;
+  const int count = not_digit ? std::countr_zero(not_digit) / 8 : 8;
+  if (count == 0) return 0;
+  // The digits, first one highest, as "00..0ddd": then 8-digit arithmetic needs no cases.
+  std::uint64_t digits = (bytes - 0x3030303030303030) << (8 * (8 - count));
+  digits = digits * 10 + (digits >> 8);
+  value = (((digits & 0x000000FF000000FF) * (100 + (1000000ull << 32))) +
+           (((digits >> 16) & 0x000000FF000000FF) * (1 + (10000ull << 32)))) >>
+          32;
+  return count;
 }
 
 }  // namespace
@@ -135,9 +98,17 @@ const char* take_short_decimal(const char* p, const char* end, double& value) {
 bool take_integer_prefix(std::string_view& text, long long& value) {
   std::string_view digits = text;
   if (!drop_plus_sign(digits)) return false;
-  if (const char* stop = take_short_integer(digits.data(), digits.data() + digits.size(), value)) {
-    text.remove_prefix(static_cast<std::size_t>(stop - text.data()));
-    return true;
+  const bool negative = digits.front() == '-';
+  if (digits.size() >= 8 + (negative ? 1 : 0)) {
+    std::uint64_t magnitude = 0;
+    const int count = leading_digits(digits.data() + (negative ? 1 : 0), magnitude);
+    if (count == 0) return false;
+    if (count < 8) {  // else more may follow: from_chars below
+      value = negative ? -static_cast<long long>(magnitude) : static_cast<long long>(magnitude);
+      text.remove_prefix(static_cast<std::size_t>(digits.data() - text.data()) +
+                         (negative ? 1 : 0) + static_cast<std::size_t>(count));
+      return true;
+    }
   }
   const auto [stop, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (error != std::errc()) return false;
@@ -150,11 +121,6 @@ bool take_double(std::string_view& text, double& value) {
   std::string_view number = text;
   if (drop_plus_sign(number)) {
     const char* end = number.data() + number.size();
-    const char* short_stop = take_short_decimal(number.data(), end, value);
-    if (short_stop && at_token_end({short_stop, end})) {
-      text.remove_prefix(static_cast<std::size_t>(short_stop - text.data()));
-      return true;
-    }
     const auto [stop, error] = std::from_chars(number.data(), end, value);
     // No number holds a blank, so one that stops at a blank (or the end) was the whole token.
     if (error == std::errc() && at_token_end({stop, end})) {
@@ -176,21 +142,22 @@ bool take_integer(std::string_view& text, long long& value) {
   return parse_integer(take_token(text), value);
 }
 
+// The first `c` at or after `from` in `text` (text.size() when none).
+std::size_t find_from(std::string_view text, std::size_t from, char c) {
+  const void* found = std::memchr(text.data() + from, c, text.size() - from);
+  return found ? static_cast<std::size_t>(static_cast<const char*>(found) - text.data())
+               : text.size();
+}
+
 // A line ends at LF, CR LF or a lone CR (classic Mac files).
 bool Lines::next(std::string_view& line) {
   if (position_ >= text_.size()) return false;
   // memchr is many times faster than a loop over the characters, but looks for one byte: the
-  // line ends at the next LF or at a CR before it.
-  if (next_newline_ <= position_) {
-    const void* newline = std::memchr(text_.data() + position_, '\n', text_.size() - position_);
-    next_newline_ = newline
-                        ? static_cast<std::size_t>(static_cast<const char*>(newline) - text_.data())
-                        : text_.size();
-  }
-  const void* return_ = std::memchr(text_.data() + position_, '\r', next_newline_ - position_);
-  const std::size_t end =
-      return_ ? static_cast<std::size_t>(static_cast<const char*>(return_) - text_.data())
-              : next_newline_;
+  // line ends at the next LF or at a CR before it. Each is searched for from where the last one
+  // was found, once it is behind (a file without CRs is searched for them once).
+  if (next_newline_ <= position_) next_newline_ = find_from(text_, position_, '\n');
+  if (next_return_ <= position_) next_return_ = find_from(text_, position_, '\r');
+  const std::size_t end = std::min(next_newline_, next_return_);
   line = text_.substr(position_, end - position_);
   position_ = end + 1;
   if (end + 1 < text_.size() && text_[end] == '\r' && text_[end + 1] == '\n') ++position_;

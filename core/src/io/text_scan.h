@@ -51,6 +51,9 @@ bool take_integer(std::string_view& text, long long& value);
 // does not fit a long long. What follows is left for the caller to check.
 bool take_integer_prefix(std::string_view& text, long long& value);
 
+// The first `c` at or after `from` in `text` (text.size() when none); from <= text.size().
+std::size_t find_from(std::string_view text, std::size_t from, char c);
+
 // Lines of a text, without their end-of-line characters, counted from 1.
 class Lines {
  public:
@@ -68,6 +71,7 @@ class Lines {
   // The first '\n' at or after position_ (text_.size() when none): found once per LF, so a
   // file of lone CRs is not searched to its end at every line.
   std::size_t next_newline_ = 0;
+  std::size_t next_return_ = 0;  // the same for '\r'
 };
 
 // Text formats must not hold NUL bytes: a binary file with a text format's extension is refused,
