@@ -112,12 +112,6 @@ int ObjReading::FaceNames::number(std::string_view name) {
   return found->second;
 }
 
-void ObjReading::FaceNames::give(std::size_t face) {
-  if (current == 0 && faces.empty()) return;
-  faces.resize(face, 0);
-  faces.push_back(current);
-}
-
 ObjReading::ObjReading(const fs::path& path, bool detached) : path_(path), detached_(detached) {
   if (!detached) return;
   for (FaceNames* names : {&material_, &group_, &object_, &smoothing_}) names->current = kInherited;
@@ -324,7 +318,10 @@ void ObjReading::read_face() {
   any_normal_ = all_or_none(normal_, given.normals, partial_normals_) || any_normal_;
   const std::size_t face = soup_.face_count();
   soup_.end_face(soup_.corners.size(), statements_->line());
-  for (FaceNames* names : {&material_, &group_, &object_, &smoothing_}) names->give(face);
+  material_.give(face);
+  group_.give(face);
+  object_.give(face);
+  smoothing_.give(face);
 }
 
 void ObjReading::check_indices(const CornerColumn& column, std::size_t defined,

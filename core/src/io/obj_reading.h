@@ -141,7 +141,11 @@ class ObjReading {
     // Gives the faces read from now on `name`.
     void set(std::string_view name) { current = number(name); }
     // Records `current` for face `face` (values stay empty while every face has none).
-    void give(std::size_t face);
+    void give(std::size_t face) {
+      if (current == 0 && faces.empty()) return;
+      if (faces.size() < face) faces.resize(face, 0);
+      faces.push_back(current);
+    }
     // Appends `later`'s faces (a detached part's) after this one's `own`.
     void append(const FaceNames& later, std::size_t own);
   };

@@ -28,18 +28,24 @@ bool has_obj_values(const Soup& soup) {
          !soup.obj.normals.empty();
 }
 
-// Each halfedge of a face gets the numbers of the soup corner at its end vertex.
+// Each halfedge of a face gets the numbers of the soup corner at its end vertex. Written into
+// the properties' arrays, the faces being triangles (through OpenMesh's property and circulator
+// calls this was about a twentieth of loading a textured OBJ).
 void copy_corner_numbers(const Soup& soup, const SoupOrigins& origins, const ObjHandles& obj,
                          Mesh& mesh) {
+  std::vector<int>& texcoords = mesh.property(obj.texcoord).data_vector();
+  std::vector<int>& normals = mesh.property(obj.normal).data_vector();
   for (const auto f : mesh.faces()) {
     const Triangle& corners = origins.face_corners[f.idx()];
     const Triangle& positions = origins.face_corner_vertices[f.idx()];
-    for (const auto h : mesh.fh_range(f)) {
+    HalfedgeHandle h = mesh.halfedge_handle(f);
+    for (int side = 0; side < 3; ++side, h = mesh.next_halfedge_handle(h)) {
       const int position = origins.vertex[mesh.to_vertex_handle(h).idx()];
       const int c = positions[0] == position ? 0 : positions[1] == position ? 1 : 2;
       const auto k = static_cast<std::size_t>(corners[c]);
-      if (!soup.corner_texcoord.empty()) mesh.property(obj.texcoord, h) = soup.corner_texcoord[k];
-      if (!soup.corner_normal.empty()) mesh.property(obj.normal, h) = soup.corner_normal[k];
+      const auto at = static_cast<std::size_t>(h.idx());
+      if (!soup.corner_texcoord.empty()) texcoords[at] = soup.corner_texcoord[k];
+      if (!soup.corner_normal.empty()) normals[at] = soup.corner_normal[k];
     }
   }
 }
