@@ -71,12 +71,17 @@ bool parse_integer(std::string_view token, long long& value) {
 
 namespace {
 
-// The number of digits (0 to 8) that the 8 bytes at `p` start with, and their value: all eight
-// bytes tested and combined at once (SWAR, as fast_float and simdjson read eight digits), where
-// from_chars takes some ten instructions a digit; face indices are most of an OBJ's numbers.
-int leading_digits(const char* p, std::uint64_t& value) {
-  std::uint64_t bytes;
-  std::memcpy(&bytes, p, sizeof bytes);
+// The number of digits (0 to 8) that the `available` bytes at `p` start with (the first 8 of
+// them, blanks for those past the end), and their value: all eight tested and combined at once
+// (SWAR, as fast_float and simdjson read eight digits), where from_chars takes some ten
+// instructions a digit; face indices are most of an OBJ's numbers.
+int leading_digits(const char* p, std::size_t available, std::uint64_t& value) {
+  std::uint64_t bytes = 0x2020202020202020;
+  if (available >= sizeof bytes) {
+    std::memcpy(&bytes, p, sizeof bytes);  // one load
+  } else {
+    std::memcpy(&bytes, p, available);
+  }
   if constexpr (std::endian::native != std::endian::little) bytes = __builtin_bswap64(bytes);
   // A byte's high bit is set in either sum unless it is '0' to '9'; what a non-digit borrows or
   // carries only reaches the bytes after it, which are not counted.
@@ -98,17 +103,15 @@ int leading_digits(const char* p, std::uint64_t& value) {
 bool take_integer_prefix(std::string_view& text, long long& value) {
   std::string_view digits = text;
   if (!drop_plus_sign(digits)) return false;
-  const bool negative = digits.front() == '-';
-  if (digits.size() >= 8 + (negative ? 1 : 0)) {
-    std::uint64_t magnitude = 0;
-    const int count = leading_digits(digits.data() + (negative ? 1 : 0), magnitude);
-    if (count == 0) return false;
-    if (count < 8) {  // else more may follow: from_chars below
-      value = negative ? -static_cast<long long>(magnitude) : static_cast<long long>(magnitude);
-      text.remove_prefix(static_cast<std::size_t>(digits.data() - text.data()) +
-                         (negative ? 1 : 0) + static_cast<std::size_t>(count));
-      return true;
-    }
+  const std::size_t sign = digits.front() == '-' ? 1 : 0;
+  std::uint64_t magnitude = 0;
+  const int count = leading_digits(digits.data() + sign, digits.size() - sign, magnitude);
+  if (count == 0) return false;
+  if (count < 8) {  // else more may follow: from_chars below
+    value = sign ? -static_cast<long long>(magnitude) : static_cast<long long>(magnitude);
+    text.remove_prefix(static_cast<std::size_t>(digits.data() - text.data()) + sign +
+                       static_cast<std::size_t>(count));
+    return true;
   }
   const auto [stop, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (error != std::errc()) return false;
