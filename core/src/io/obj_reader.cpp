@@ -101,14 +101,18 @@ void ObjReading::read(std::string_view text) {
   for (const auto& [keyword, count] : statements.not_kept()) not_kept_[keyword] += count;
 }
 
-void ObjReading::FaceNames::append(const FaceNames& later, std::size_t own) {
+void ObjReading::FaceNames::append(const FaceNames& later, std::size_t own, std::size_t count) {
   std::vector<int> number_of(later.names.size() + 1, 0);  // later's numbers as this one's
   for (std::size_t k = 0; k < later.names.size(); ++k) number_of[k + 1] = number(later.names[k]);
   auto ours = [&](int value) { return value == kInherited ? current : number_of[value]; };
-  const bool none = faces.empty() && std::all_of(later.faces.begin(), later.faces.end(),
-                                                 [&](int value) { return ours(value) == 0; });
+  // Later's faces before its first name (all of them when it kept none) have this one's current.
+  const std::size_t inheriting = later.faces.empty() ? count : 0;
+  const bool none = faces.empty() && (inheriting == 0 || current == 0) &&
+                    std::all_of(later.faces.begin(), later.faces.end(),
+                                [&](int value) { return ours(value) == 0; });
   if (!none) {
     faces.resize(own, 0);
+    faces.resize(own + inheriting, current);
     for (const int value : later.faces) faces.push_back(ours(value));
   }
   current = ours(later.current);
@@ -145,7 +149,7 @@ bool ObjReading::append(ObjReading& second) {
   }
   FaceNames ObjReading::*const per_face[] = {&ObjReading::material_, &ObjReading::group_,
                                              &ObjReading::object_, &ObjReading::smoothing_};
-  for (const auto names : per_face) (this->*names).append(second.*names, faces);
+  for (const auto names : per_face) (this->*names).append(second.*names, faces, later.face_count());
   ObjTables& tables = soup_.obj;
   if (!later.obj.texcoords.empty()) {
     tables.texcoord_size = tables.texcoords.empty()

@@ -114,7 +114,9 @@ int ObjReading::FaceNames::number(std::string_view name) {
 
 ObjReading::ObjReading(const fs::path& path, bool detached) : path_(path), detached_(detached) {
   if (!detached) return;
-  for (FaceNames* names : {&material_, &group_, &object_, &smoothing_}) names->current = kInherited;
+  for (FaceNames* names : {&material_, &group_, &object_, &smoothing_}) {
+    names->initial = names->current = kInherited;
+  }
 }
 
 void ObjReading::fail_here(const std::string& reason) const {

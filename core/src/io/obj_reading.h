@@ -135,19 +135,20 @@ class ObjReading {
     std::vector<std::string>& names;
     std::vector<int>& faces;
     std::unordered_map<std::string, int> numbers = {};
-    int current = 0;
+    int initial = 0;  // what faces have before the first name: 0, or kInherited
+    int current = initial;
     // The number of `name`, added at the end when new.
     int number(std::string_view name);
     // Gives the faces read from now on `name`.
     void set(std::string_view name) { current = number(name); }
-    // Records `current` for face `face` (values stay empty while every face has none).
+    // Records `current` for face `face` (values stay empty while every face has the initial).
     void give(std::size_t face) {
-      if (current == 0 && faces.empty()) return;
-      if (faces.size() < face) faces.resize(face, 0);
+      if (current == initial && faces.empty()) return;
+      if (faces.size() < face) faces.resize(face, initial);
       faces.push_back(current);
     }
-    // Appends `later`'s faces (a detached part's) after this one's `own`.
-    void append(const FaceNames& later, std::size_t own);
+    // Appends `later`'s faces (a detached part's, `count` of them) after this one's `own`.
+    void append(const FaceNames& later, std::size_t own, std::size_t count);
   };
   static constexpr int kInherited = -1;
 
