@@ -86,9 +86,16 @@ Checkpoints continue_checkpoints(const Checkpoints& saved, const std::vector<Fil
   return {};
 }
 
+std::vector<const Hole*> loops_of(const std::vector<Hole>& holes, int hole_id,
+                                  const std::vector<int>& joined) {
+  std::vector<const Hole*> loops{&holes[hole_id]};
+  for (const int id : joined) loops.push_back(&holes[id]);
+  return loops;
+}
+
 bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& step,
               Checkpoints* checkpoints, Progress* progress,
-              const std::shared_ptr<const MeshState>& unchanged) {
+              const std::shared_ptr<const MeshState>& unchanged, FillSequence* sequence) {
   const bool followed = checkpoints && checkpoints->hole_id == step.hole_id;
   // The state before this step, unless it is kept already (states[k] precedes steps[k]).
   if (followed && checkpoints->states.size() == checkpoints->steps.size() &&
@@ -97,10 +104,10 @@ bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& 
   }
   FillOptions options = step.options;
   options.triangulate.progress = progress;
-  std::vector<const Hole*> loops{&holes[step.hole_id]};
-  for (const int id : step.joined) loops.push_back(&holes[id]);
-  const bool ran =
-      advance_joined(state.mesh, loops, state.fills[step.hole_id], options) == StageRun::Ran;
+  const std::vector<const Hole*> loops = loops_of(holes, step.hole_id, step.joined);
+  HoleFill& fill = state.fills[step.hole_id];
+  const bool ran = (sequence ? sequence->step(loops, fill, options)
+                             : advance_joined(state.mesh, loops, fill, options)) == StageRun::Ran;
   if (followed) checkpoints->steps.push_back(step);
   return ran;
 }
@@ -132,12 +139,15 @@ std::optional<Rebuilt> rebuild(const std::shared_ptr<const MeshState>& loaded,
     if (last) result.checkpoints = {hole_id, std::move(others), {}, {}};
     to_run = log;
   }
+  std::vector<std::vector<const Hole*>> groups;
+  for (const FillStep& step : to_run) groups.push_back(loops_of(holes, step.hole_id, step.joined));
+  FillSequence sequence(result.state.mesh, groups);
   for (std::size_t i = 0; i < to_run.size(); ++i) {
     if (progress && progress->cancelled()) return std::nullopt;
     // A replay from the loaded mesh keeps that mesh, shared, as the state before its first step.
     const bool from_loaded = i == 0 && result.checkpoints.states.empty();
     run_step(result.state, holes, to_run[i], &result.checkpoints, progress,
-             from_loaded ? loaded : nullptr);
+             from_loaded ? loaded : nullptr, &sequence);
     if (progress) progress->set_fraction(static_cast<double>(i + 1) / to_run.size());
   }
   if (progress && progress->cancelled()) return std::nullopt;

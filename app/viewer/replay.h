@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "holefill/fill.h"
+#include "holefill/fill_sequence.h"
 #include "holefill/progress.h"
 
 namespace holefill::viewer {
@@ -67,9 +68,16 @@ Checkpoints continue_checkpoints(const Checkpoints& saved, const std::vector<Fil
 // step.hole_id, the state before the step is kept first and the step recorded: `unchanged`
 // where the caller has it (a kept state equal to `state`, shared instead of copied: a mesh of a
 // million faces is about 100 MB), else a copy. Returns whether the stage ran.
+// With `sequence` (over state.mesh), the step runs through it (fill_sequence.h: the same result,
+// without looking at the whole mesh at every step).
 bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& step,
               Checkpoints* checkpoints, Progress* progress,
-              const std::shared_ptr<const MeshState>& unchanged = nullptr);
+              const std::shared_ptr<const MeshState>& unchanged = nullptr,
+              FillSequence* sequence = nullptr);
+
+// The loops a step of `hole_id` with `joined` fills: the hole first, then the joined ones.
+std::vector<const Hole*> loops_of(const std::vector<Hole>& holes, int hole_id,
+                                  const std::vector<int>& joined);
 
 struct Rebuilt {
   MeshState state;

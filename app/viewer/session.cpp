@@ -189,6 +189,13 @@ std::optional<FillResult> Session::compute(const FillRequest& request, Progress*
   // Progress counts boundary edges, a rough measure of each hole's share of the work.
   double total = 0.0, done = 0.0;
   for (const int id : request.hole_ids) total += static_cast<double>(holes_[id].size());
+  std::vector<std::vector<const Hole*>> groups;
+  for (const int id : request.hole_ids) {
+    const auto joined = request.joined.find(id);
+    groups.push_back(
+        loops_of(holes_, id, joined == request.joined.end() ? std::vector<int>{} : joined->second));
+  }
+  FillSequence sequence(result.state.mesh, groups);
   for (const int id : request.hole_ids) {
     if (progress && progress->cancelled()) return std::nullopt;
     HoleFill& fill = result.state.fills[id];
@@ -199,7 +206,7 @@ std::optional<FillResult> Session::compute(const FillRequest& request, Progress*
                     request.options);
       // Until a step runs, the state is the session's own, which the checkpoints may share.
       const bool ran = run_step(result.state, holes_, step, &result.checkpoints, progress,
-                                result.log.size() == log_.size() ? state_ : nullptr);
+                                result.log.size() == log_.size() ? state_ : nullptr, &sequence);
       if (progress && progress->cancelled()) return std::nullopt;
       // A failed stage is logged too, so that replay shows the same failure in the hole list.
       if (ran || fill.failed()) result.log.push_back(step);

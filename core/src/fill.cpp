@@ -9,6 +9,7 @@
 #include <system_error>
 #include <thread>
 
+#include "advance_unscaled.h"
 #include "avoid_intersections.h"
 #include "hole_triangulation.h"
 #include "holefill/attributes.h"
@@ -294,10 +295,7 @@ std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch) {
 }
 
 StageRun advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options) {
-  const auto [advanced, scaled] = at_safe_scale(
-      mesh, [&] { return advance_with(mesh, hole, fill, options, nullptr, nullptr); });
-  if (scaled) measure_again(mesh, fill);
-  return advanced;
+  return advance_joined(mesh, {&hole}, fill, options);
 }
 
 HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options) {
@@ -323,19 +321,26 @@ HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
 
 StageRun advance_joined(Mesh& mesh, const std::vector<const Hole*>& loops, HoleFill& fill,
                         const FillOptions& options) {
-  if (loops.size() == 1) return advance(mesh, *loops.front(), fill, options);
-  const auto [advanced, scaled] = at_safe_scale(mesh, [&] {
-    if (fill.stage() != Stage::Original || fill.failed()) {
-      return advance_with(mesh, *loops.front(), fill, options, nullptr, nullptr);
-    }
+  const auto [advanced, scaled] = at_safe_scale(
+      mesh, [&] { return detail::advance_unscaled(mesh, loops, fill, options, nullptr); });
+  if (scaled) measure_again(mesh, fill);
+  return advanced;
+}
+
+StageRun detail::advance_unscaled(Mesh& mesh, const std::vector<const Hole*>& loops, HoleFill& fill,
+                                  const FillOptions& options, const MeshFaceIndex* index) {
+  if (loops.size() == 1) return advance_with(mesh, *loops.front(), fill, options, nullptr, index);
+  StageRun advanced;
+  if (fill.stage() != Stage::Original || fill.failed()) {
+    advanced = advance_with(mesh, *loops.front(), fill, options, nullptr, index);
+  } else {
     JoinedLoops joined;
     const double seconds =
         timed([&] { joined = plan_joined_loops(mesh, loops, options.triangulate, options.join); });
     fill.times.triangulate_seconds += seconds;
-    return advance_with(mesh, joined.polygon, fill, without_avoidance(options), &joined.plan,
-                        nullptr);
-  });
-  if (scaled) measure_again(mesh, fill);
+    advanced =
+        advance_with(mesh, joined.polygon, fill, without_avoidance(options), &joined.plan, index);
+  }
   fill.boundary_edges = 0;
   fill.joined_holes.clear();
   for (const Hole* loop : loops) {

@@ -11,15 +11,28 @@ Point times_power_of_two(const Point& p, int exponent) {
 
 }  // namespace
 
-SafeScale::SafeScale(Mesh& mesh) : mesh_(mesh) {
+double SafeScale::largest_coordinate(const Point& point) {
   double largest = 0.0;
-  for (const auto v : mesh.vertices()) {
-    for (int axis = 0; axis < 3; ++axis) largest = std::max(largest, std::abs(mesh.point(v)[axis]));
-  }
-  if (!(largest > 0.0) || !std::isfinite(largest)) return;
-  const int exponent = std::ilogb(largest);
-  if (std::abs(exponent) <= kMaxExponent) return;
-  exponent_ = exponent;
+  for (int axis = 0; axis < 3; ++axis) largest = std::max(largest, std::abs(point[axis]));
+  return largest;
+}
+
+double SafeScale::largest_coordinate(const Mesh& mesh) {
+  double largest = 0.0;
+  for (const auto v : mesh.vertices())
+    largest = std::max(largest, largest_coordinate(mesh.point(v)));
+  return largest;
+}
+
+bool SafeScale::leaves_alone(double largest) {
+  return !(largest > 0.0) || !std::isfinite(largest) ||
+         std::abs(std::ilogb(largest)) <= kMaxExponent;
+}
+
+SafeScale::SafeScale(Mesh& mesh) : mesh_(mesh) {
+  const double largest = largest_coordinate(mesh);
+  if (leaves_alone(largest)) return;
+  exponent_ = std::ilogb(largest);
   original_.reserve(mesh.n_vertices());
   for (const auto v : mesh.vertices()) {
     original_.push_back(mesh.point(v));

@@ -18,6 +18,12 @@ class SafeScale {
 
   // Scales `mesh` (when needed) so that its largest coordinate lies in [1, 2).
   explicit SafeScale(Mesh& mesh);
+
+  // The largest absolute coordinate of the mesh's vertices or of one point (NaN ignored).
+  static double largest_coordinate(const Mesh& mesh);
+  static double largest_coordinate(const Point& point);
+  // Whether a mesh whose largest absolute coordinate is `largest` is left as it is.
+  static bool leaves_alone(double largest);
   // Scales the vertices added since back and restores the original ones exactly.
   ~SafeScale();
   SafeScale(const SafeScale&) = delete;
