@@ -7,6 +7,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
 
 #include "bench_holes.h"
 #include "cgal_triangulate.h"
@@ -86,19 +90,28 @@ int main(int argc, char** argv) {
           cgal_delaunay);
     print("CGAL Delaunay", n, {cgal_delaunay, evaluate_triangulation(polygon, delaunay)}, cgal_full,
           cgal_delaunay);
-    // Ours with the full search forced (whatever the size), and with the restricted search
-    // (what holes above RestrictedSearch::above_edges get by default).
-    for (const bool restricted : {false, true}) {
+    // Ours with the full search forced (whatever the size) on one thread and on every core
+    // (named, not left to the search's own choice by the load average, which this program's
+    // CGAL runs raise), and with the restricted search (what holes above
+    // RestrictedSearch::above_edges get by default).
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    const std::vector<std::pair<bool, unsigned>> searches{
+        {false, 1u}, {false, cores}, {true, 0u}};  // (restricted, threads; 0: its own choice)
+    for (const auto& [restricted, threads] : searches) {
+      if (!restricted && threads == cores && cores == 1) continue;
       for (const auto weight : {WeightKind::Liepa, WeightKind::MaxMin}) {
         TriangulateOptions options{weight};
         options.restricted.above_edges = 0;
+        options.threads = threads;
         std::optional<PolygonTriangulation> ours;
         const double seconds = best_time(repeats, [&] {
           ours = restricted ? triangulate_polygon_restricted(polygon, options)
                             : triangulate_polygon(polygon, options);
         });
-        const std::string name =
-            "holefill " + to_string(weight) + (restricted ? " restricted" : " full");
+        const std::string name = "holefill " + to_string(weight) +
+                                 (restricted ? std::string(" restricted")
+                                             : " full, " + std::to_string(threads) +
+                                                   (threads == 1 ? " thread" : " threads"));
         print(name.c_str(), n, {seconds, ours->quality}, cgal_full, cgal_delaunay);
       }
     }
