@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <ostream>
+#include <string_view>
 
 #include "holefill/errors.h"
 #include "holefill/io.h"
@@ -69,17 +70,34 @@ void check_outputs(const FillArguments& a) {
   if (!a.report_path.empty() && a.report_path != "-") check_output_file(a.report_path);
 }
 
-void write_output(const std::string& path, const std::string& bytes, std::ostream& out) {
-  if (path != "-") return write_output_file(path, bytes);
+namespace {
+
+void write_to_stream(std::string_view bytes, std::ostream& out) {
   errno = 0;
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!out) throw FileError("standard output", "could not be written" + last_system_error());
+}
+
+void flush_stream(std::ostream& out) {
+  errno = 0;
   out.flush();
   if (!out) throw FileError("standard output", "could not be written" + last_system_error());
 }
 
+}  // namespace
+
+void write_output(const std::string& path, const std::string& bytes, std::ostream& out) {
+  if (path != "-") return write_output_file(path, bytes);
+  write_to_stream(bytes, out);
+  flush_stream(out);
+}
+
+// To standard output the mesh goes a piece at a time as it is made, never whole in memory.
 void write_mesh_output(const Mesh& mesh, const FillArguments& a, std::ostream& out) {
   if (a.output != "-") return save_mesh(mesh, a.output);
-  write_output(a.output, mesh_to_bytes(mesh, mesh_output_name(a)), out);
+  write_mesh_pieces(mesh, mesh_output_name(a),
+                    [&out](std::string_view piece) { write_to_stream(piece, out); });
+  flush_stream(out);
 }
 
 std::vector<std::string> mesh_output_losses(const Mesh& mesh, const FillArguments& a) {

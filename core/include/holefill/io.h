@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "holefill/mesh.h"
+#include "holefill/output_file.h"
 
 namespace holefill {
 
@@ -60,9 +61,14 @@ Mesh load_mesh_from_memory(const std::string& bytes, const std::filesystem::path
 // be written.
 void save_mesh(const Mesh& mesh, const std::filesystem::path& path);
 
-// The bytes save_mesh writes for `mesh` in the format `name`'s extension says (.obj .off .ply
-// .stl), for callers that send them elsewhere (standard output). Throws FileError naming `name` for
-// another extension.
+// Hands `write` the bytes save_mesh writes for `mesh` in the format `name`'s extension says (.obj
+// .off .ply .stl), in order, in pieces of about a megabyte as they are made, for callers that
+// send them elsewhere (standard output): the file never exists whole in memory. Throws FileError
+// naming `name` for another extension, before any piece; what `write` throws passes through.
+void write_mesh_pieces(const Mesh& mesh, const std::filesystem::path& name,
+                       const ByteWriter& write);
+
+// The bytes write_mesh_pieces hands on, whole.
 std::string mesh_to_bytes(const Mesh& mesh, const std::filesystem::path& name);
 
 // What save_mesh leaves out of a file of `name`'s format (by extension) that the mesh carries,

@@ -165,9 +165,8 @@ std::string writable_extension(const fs::path& name) {
   return ext;
 }
 
-// Hands `write` the file save_mesh writes at `name` (whose extension was checked).
-void write_mesh(const Mesh& mesh, const fs::path& name, const ByteWriter& write) {
-  const std::string ext = lower_extension(name);
+void write_mesh_pieces(const Mesh& mesh, const fs::path& name, const ByteWriter& write) {
+  const std::string ext = writable_extension(name);
   // Indices in the file must count live elements only.
   if (has_deleted_elements(mesh)) {
     Mesh compacted = mesh;
@@ -178,16 +177,15 @@ void write_mesh(const Mesh& mesh, const fs::path& name, const ByteWriter& write)
 }
 
 std::string mesh_to_bytes(const Mesh& mesh, const fs::path& name) {
-  writable_extension(name);
   std::string bytes;
-  write_mesh(mesh, name, [&bytes](std::string_view piece) { bytes += piece; });
+  write_mesh_pieces(mesh, name, [&bytes](std::string_view piece) { bytes += piece; });
   return bytes;
 }
 
 // The file is written as it is made, a piece at a time, never whole in memory.
 void save_mesh(const Mesh& mesh, const fs::path& path) {
-  writable_extension(path);
-  write_output_file(path, [&](const ByteWriter& write) { write_mesh(mesh, path, write); });
+  writable_extension(path);  // before the output file is begun
+  write_output_file(path, [&](const ByteWriter& write) { write_mesh_pieces(mesh, path, write); });
 }
 
 }  // namespace holefill

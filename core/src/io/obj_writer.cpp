@@ -37,7 +37,7 @@ void append_material_libraries(std::string& out, const ObjTables& tables, const 
 
 // Vertex colours as "v x y z r g b" (in [0, 1]: integer channels are scaled, others written as
 // they are, so OBJ colours round-trip exactly).
-void append_coloured_vertices(const Mesh& mesh, std::string& out) {
+void append_coloured_vertices(const Mesh& mesh, PieceOut& out) {
   const AttributeLayout layout = attribute_layout(mesh);
   std::vector<std::pair<OpenMesh::VPropHandleT<double>, double>> channels;  // and their scale
   for (const char* name : {"red", "green", "blue"}) {
@@ -47,13 +47,16 @@ void append_coloured_vertices(const Mesh& mesh, std::string& out) {
     channels.emplace_back(vertex_attribute(mesh, name), full_intensity(found->type));
   }
   if (channels.size() != 3) channels.clear();
-  append_vertices(mesh, out, "v ", [&](VertexHandle v) {
-    for (const auto& [property, scale] : channels) {
-      out += ' ';
-      append_number(out,
-                    scale == 1.0 ? mesh.property(property, v) : mesh.property(property, v) / scale);
-    }
-  });
+  append_vertices(
+      mesh, out.text, "v ",
+      [&](VertexHandle v) {
+        for (const auto& [property, scale] : channels) {
+          out.text += ' ';
+          append_number(out.text, scale == 1.0 ? mesh.property(property, v)
+                                               : mesh.property(property, v) / scale);
+        }
+      },
+      [&out] { out.end_record(); });
 }
 
 // The number each table entry is written as (indexed by the mesh's number, 0: not written):
@@ -71,30 +74,35 @@ std::vector<int> written_numbers(const Mesh& mesh, OpenMesh::HPropHandleT<int> p
   return number;
 }
 
+// One line per written entry of `values` (append(line, value) makes it).
 template <class Values, class Append>
-void append_table(const Values& values, const std::vector<int>& number, Append&& append) {
+void append_table(const Values& values, const std::vector<int>& number, PieceOut& out,
+                  Append&& append) {
   for (std::size_t i = 0; i < values.size(); ++i) {
-    if (number[i + 1]) append(values[i]);
+    if (!number[i + 1]) continue;
+    append(out.text, values[i]);
+    out.end_record();
   }
 }
 
-void append_tables(std::string& out, const ObjTables& tables, const std::vector<int>& texcoord,
+void append_tables(PieceOut& out, const ObjTables& tables, const std::vector<int>& texcoord,
                    const std::vector<int>& normal) {
-  append_table(tables.texcoords, texcoord, [&](const std::array<double, 3>& uvw) {
-    out += "vt";
-    for (int i = 0; i < tables.texcoord_size; ++i) {
-      out += ' ';
-      append_number(out, uvw[i]);
-    }
-    out += '\n';
-  });
-  append_table(tables.normals, normal, [&](const Point& n) {
-    out += "vn";
+  append_table(tables.texcoords, texcoord, out,
+               [&](std::string& line, const std::array<double, 3>& uvw) {
+                 line += "vt";
+                 for (int i = 0; i < tables.texcoord_size; ++i) {
+                   line += ' ';
+                   append_number(line, uvw[i]);
+                 }
+                 line += '\n';
+               });
+  append_table(tables.normals, normal, out, [&](std::string& line, const Point& n) {
+    line += "vn";
     for (int axis = 0; axis < 3; ++axis) {
-      out += ' ';
-      append_number(out, n[axis]);
+      line += ' ';
+      append_number(line, n[axis]);
     }
-    out += '\n';
+    line += '\n';
   });
 }
 
@@ -148,7 +156,8 @@ void append_face(const Mesh& mesh, FaceHandle f, const ObjHandles& obj,
 
 void append_faces_with_states(const Mesh& mesh, const ObjHandles& obj, const ObjTables& tables,
                               const std::vector<int>& texcoord, const std::vector<int>& normal,
-                              std::string& out) {
+                              PieceOut& pieces) {
+  std::string& out = pieces.text;
   int object = 0, group = 0, material = 0, smoothing = 0;
   // Writes "<keyword> <name>" when a face's number differs from the current one.
   auto switch_to = [&out](int& current, int number, const char* keyword,
@@ -166,19 +175,21 @@ void append_faces_with_states(const Mesh& mesh, const ObjHandles& obj, const Obj
     switch_to(material, mesh.property(obj.material, f), "usemtl", tables.materials, "");
     switch_to(smoothing, mesh.property(obj.smoothing, f), "s", tables.smoothing_groups, "off");
     append_face(mesh, f, obj, texcoord, normal, out);
+    pieces.end_record();
   }
 }
 
 }  // namespace
 
-std::string obj_bytes(const Mesh& mesh, const fs::path& output) {
-  std::string out = "# written by holefill\n";
+void write_obj(const Mesh& mesh, const fs::path& output, PieceOut& out) {
+  out.text += "# written by holefill\n";
   const ObjHandles obj = obj_handles(mesh);
-  if (obj.valid()) append_material_libraries(out, mesh.property(obj.tables), output);
+  if (obj.valid()) append_material_libraries(out.text, mesh.property(obj.tables), output);
   append_coloured_vertices(mesh, out);
   if (!obj.valid()) {
-    append_faces(mesh, out, "f ", 1, [](FaceHandle) {});
-    return out;
+    append_faces(
+        mesh, out.text, "f ", 1, [](FaceHandle) {}, [&out] { out.end_record(); });
+    return;
   }
   const ObjTables& tables = mesh.property(obj.tables);
   const std::vector<int> texcoord =
@@ -187,7 +198,6 @@ std::string obj_bytes(const Mesh& mesh, const fs::path& output) {
       written_numbers(mesh, obj.normal, tables.normals.size(), tables.file_normals);
   append_tables(out, tables, texcoord, normal);
   append_faces_with_states(mesh, obj, tables, texcoord, normal, out);
-  return out;
 }
 
 }  // namespace holefill::io

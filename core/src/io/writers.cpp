@@ -226,9 +226,10 @@ void write_stl(const Mesh& mesh, PieceOut& out) {
 
 void write_mesh_file(const Mesh& mesh, const std::string& ext, const std::filesystem::path& output,
                      const ByteWriter& write) {
-  if (ext == ".obj") return write(obj_bytes(mesh, output));
   PieceOut out(write);
-  if (ext == ".off") {
+  if (ext == ".obj") {
+    write_obj(mesh, output, out);
+  } else if (ext == ".off") {
     write_off(mesh, out);
   } else if (ext == ".stl") {
     write_stl(mesh, out);

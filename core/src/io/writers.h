@@ -15,12 +15,13 @@ namespace holefill::io {
 
 // Hands `write` the file for `mesh` in the format `ext` names (".obj", ".off", ".stl"; anything
 // else is written as PLY), to be written at `output` (an OBJ names its material libraries
-// relative to its folder): PLY, OFF and STL in pieces of about a megabyte, OBJ whole. Faces index
+// relative to its folder), in pieces of about a megabyte. Faces index
 // live vertices only: the mesh must hold no deleted elements.
 void write_mesh_file(const Mesh& mesh, const std::string& ext, const std::filesystem::path& output,
                      const ByteWriter& write);
 
-// The OBJ file (obj_writer.cpp).
-std::string obj_bytes(const Mesh& mesh, const std::filesystem::path& output);
+class PieceOut;
+// The OBJ file (obj_writer.cpp), handed on through `out` as it is made.
+void write_obj(const Mesh& mesh, const std::filesystem::path& output, PieceOut& out);
 
 }  // namespace holefill::io
