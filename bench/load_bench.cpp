@@ -75,9 +75,8 @@ std::string grid_obj(bool textured) {
   return out;
 }
 
-std::string grid_off() {
-  std::string out = "OFF\n" + std::to_string(kSide * kSide) + " " +
-                    std::to_string(2 * (kSide - 1) * (kSide - 1)) + " 0\n";
+// "x y z" lines, then "3 a b c" lines (indices from 0): the body of an OFF and of an ASCII PLY.
+void append_vertex_and_face_lines(std::string& out) {
   for (int i = 0; i < kSide; ++i) {
     for (int j = 0; j < kSide; ++j) {
       append_float(out, i / double(kSide));
@@ -94,6 +93,21 @@ std::string grid_off() {
     }
     out += '\n';
   });
+}
+
+std::string grid_off() {
+  std::string out = "OFF\n" + std::to_string(kSide * kSide) + " " +
+                    std::to_string(2 * (kSide - 1) * (kSide - 1)) + " 0\n";
+  append_vertex_and_face_lines(out);
+  return out;
+}
+
+std::string grid_ascii_ply() {
+  std::string out = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(kSide * kSide) +
+                    "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
+                    std::to_string(2 * (kSide - 1) * (kSide - 1)) +
+                    "\nproperty list uchar int vertex_indices\nend_header\n";
+  append_vertex_and_face_lines(out);
   return out;
 }
 
@@ -147,6 +161,11 @@ void LoadOff1M(benchmark::State& state) {
   load(state, bytes, "grid.off");
 }
 
+void LoadAsciiPly1M(benchmark::State& state) {
+  static const std::string bytes = grid_ascii_ply();
+  load(state, bytes, "grid.ply");
+}
+
 void LoadBinaryPly1M(benchmark::State& state) {
   static const std::string bytes = grid_binary_ply();
   load(state, bytes, "grid.ply");
@@ -156,6 +175,7 @@ void LoadBinaryPly1M(benchmark::State& state) {
 BENCHMARK(LoadObj1M)->Unit(benchmark::kMillisecond)->Iterations(3)->MeasureProcessCPUTime();
 BENCHMARK(LoadTexturedObj1M)->Unit(benchmark::kMillisecond)->Iterations(3)->MeasureProcessCPUTime();
 BENCHMARK(LoadOff1M)->Unit(benchmark::kMillisecond)->Iterations(3)->MeasureProcessCPUTime();
+BENCHMARK(LoadAsciiPly1M)->Unit(benchmark::kMillisecond)->Iterations(3)->MeasureProcessCPUTime();
 BENCHMARK(LoadBinaryPly1M)->Unit(benchmark::kMillisecond)->Iterations(3)->MeasureProcessCPUTime();
 
 }  // namespace

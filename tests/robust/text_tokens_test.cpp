@@ -5,7 +5,9 @@
 // The expected messages are those of the readers before the fast paths.
 #include <bit>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <random>
 #include <string>
@@ -120,6 +122,41 @@ std::vector<std::string> number_spellings() {
                                         "1.2.3",
                                         "007",
                                         "-000000000000000000001"};
+  // The short decimal path's edges: 19 and 20 digits, 8 and 16 (read eight at a time), a
+  // mantissa of 2^53 and one past it, powers of ten 22 and 23 either way after the fraction's
+  // digits, exponents of 3 and 4 digits, a bare point, signs, what strtod reads and from_chars
+  // does not.
+  spellings.insert(spellings.end(), {"1234567890.123456789",
+                                     "1234567890.1234567891",
+                                     "0000000000000000000.5",
+                                     "12345678",
+                                     "1234567812345678",
+                                     "0.12345678",
+                                     "9007199254740.992",
+                                     "9007199254740.993",
+                                     "900719925474099.3e-20",
+                                     "0.5e-21",
+                                     "0.5e-22",
+                                     "0.05e24",
+                                     "0.05e23",
+                                     "123.456e20",
+                                     "123.456e21",
+                                     "1e-022",
+                                     "1e999",
+                                     "-0e-5",
+                                     "0e-400",
+                                     "1.e5",
+                                     "+.5",
+                                     ".e5",
+                                     "1.5e",
+                                     "1.5e-",
+                                     "1.5e+-3",
+                                     "1.5E+003",
+                                     "0.1\r",
+                                     "1e5.5",
+                                     "0x1p3",
+                                     "infinity",
+                                     "-nan"});
   char text[64];
   for (int i = 0; i < 4000; ++i) {
     const double magnitude = std::ldexp(std::uniform_real_distribution<>(-1, 1)(random),
@@ -165,6 +202,31 @@ TEST(TextTokens, NumbersReadInPlaceAreWhatFromCharsReads) {
         EXPECT_EQ(integer, expected) << text;
         EXPECT_EQ(rest.data(), stop) << text;
       }
+    }
+  }
+}
+
+// Whatever strtod reads whole (in the C locale) that is decimal, take_double reads to the same
+// double, bit for bit; it refuses hexadecimal numbers, which from_chars does not read, and
+// reads nothing strtod would not.
+TEST(TextTokens, DecimalNumbersReadAsStrtodReadsThem) {
+  for (const std::string& spelling : number_spellings()) {
+    std::string_view text = spelling;
+    double value = 0;
+    const bool read = io::take_double(text, value);
+    char* stop = nullptr;
+    const double expected = std::strtod(spelling.c_str(), &stop);
+    const bool whole = !spelling.empty() && *stop == '\0';
+    const bool hexadecimal = spelling.find_first_of("xX") != std::string::npos;
+    const bool trailing_blank = spelling.back() == '\r';
+    if (hexadecimal || trailing_blank) {
+      EXPECT_EQ(read, trailing_blank) << spelling;
+      continue;
+    }
+    ASSERT_EQ(read, whole) << spelling;
+    if (read && !std::isnan(expected)) {
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(value), std::bit_cast<std::uint64_t>(expected))
+          << spelling;
     }
   }
 }

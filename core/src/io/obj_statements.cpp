@@ -120,14 +120,9 @@ std::size_t ObjStatements::comment_start(std::string_view line) {
   if (line.data() < text_.data() || line.data() >= text_.data() + text_.size()) {
     return line.find('#');  // a continued statement, joined
   }
-  // The next '#' in the text, searched for again only once it is behind (files without
-  // comments are searched once).
   const auto start = static_cast<std::size_t>(line.data() - text_.data());
-  if (!next_hash_known_ || next_hash_ < start) {
-    next_hash_ = find_from(text_, start, '#');
-    next_hash_known_ = true;
-  }
-  return next_hash_ - start < line.size() ? next_hash_ - start : std::string_view::npos;
+  const std::size_t hash = next_hash_.at_or_after(start);
+  return hash - start < line.size() ? hash - start : std::string_view::npos;
 }
 
 bool ObjStatements::is_direct(DirectStatement& kind) const {

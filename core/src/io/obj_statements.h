@@ -28,7 +28,7 @@ class ObjStatements : public std::streambuf {
  public:
   // `text` follows `lines_before` lines of the file (its first line is line lines_before + 1).
   explicit ObjStatements(std::string_view text, std::size_t lines_before = 0)
-      : text_(text), lines_(text), lines_before_(lines_before) {}
+      : text_(text), lines_(text), next_hash_(text, '#'), lines_before_(lines_before) {}
 
   // The statement being read (no comment, no end of line) and the line it starts on.
   std::string_view statement() const { return statement_; }
@@ -74,8 +74,7 @@ class ObjStatements : public std::streambuf {
 
   std::string_view text_;
   Lines lines_;
-  std::size_t next_hash_ = 0;  // the first '#' at or after the last line searched
-  bool next_hash_known_ = false;
+  NextOccurrence next_hash_;
   std::size_t lines_before_;
   std::string joined_;  // a statement continued over several lines
   std::string served_;  // what tinyobjloader reads: the statement and '\n'

@@ -72,16 +72,25 @@ bool parse_integer(std::string_view token, long long& value) {
 namespace {
 
 // The number of digits (0 to 8) that the `available` bytes at `p` start with (the first 8 of
-// them, blanks for those past the end), and their value: all eight tested and combined at once
-// (SWAR, as fast_float and simdjson read eight digits), where from_chars takes some ten
-// instructions a digit; face indices are most of an OBJ's numbers.
-int leading_digits(const char* p, std::size_t available, std::uint64_t& value) {
-  std::uint64_t bytes = 0x2020202020202020;
-  if (available >= sizeof bytes) {
-    std::memcpy(&bytes, p, sizeof bytes);  // one load
-  } else {
-    std::memcpy(&bytes, p, available);
+// them), and their value: all eight tested and combined at once (SWAR, as fast_float and
+// simdjson read eight digits), where from_chars takes some ten instructions a digit; face
+// indices are most of an OBJ's numbers. Fewer than eight bytes (a line's last number) are read
+// one at a time (a partial load went through a memcpy call).
+[[gnu::always_inline]] inline int leading_digits(const char* p, std::size_t available,
+                                                 std::uint64_t& value) {
+  if (available < 8) {
+    std::uint64_t short_value = 0;
+    int count = 0;
+    for (; count < static_cast<int>(available); ++count) {
+      const unsigned digit = static_cast<unsigned char>(p[count]) - unsigned{'0'};
+      if (digit > 9) break;
+      short_value = short_value * 10 + digit;
+    }
+    if (count) value = short_value;
+    return count;
   }
+  std::uint64_t bytes;
+  std::memcpy(&bytes, p, sizeof bytes);  // one load
   if constexpr (std::endian::native != std::endian::little) bytes = __builtin_bswap64(bytes);
   // A byte's high bit is set in either sum unless it is '0' to '9'; what a non-digit borrows or
   // carries only reaches the bytes after it, which are not counted.
@@ -119,10 +128,85 @@ bool take_integer_prefix(std::string_view& text, long long& value) {
   return true;
 }
 
+namespace {
+
+// The powers of ten that a double holds exactly.
+constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                        1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                        1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+constexpr int kMaxExactPower = 22;
+constexpr std::uint64_t kMaxExactMantissa = std::uint64_t{1} << 53;
+constexpr std::uint64_t kPowersOfTenToEight[] = {1,      10,      100,      1000,     10000,
+                                                 100000, 1000000, 10000000, 100000000};
+
+// Appends the digits at `p` (up to `end`) to `mantissa` and returns how many there were.
+[[gnu::always_inline]] inline int append_digits(const char*& p, const char* end,
+                                                std::uint64_t& mantissa) {
+  const char* q = p;
+  std::uint64_t value = mantissa;  // locals: no store per digit
+  for (;;) {
+    std::uint64_t some = 0;
+    const int count = leading_digits(q, static_cast<std::size_t>(end - q), some);
+    value = value * kPowersOfTenToEight[count] + some;  // wraps past 19 digits, refused
+    q += count;
+    if (count < 8) break;
+  }
+  const auto count = static_cast<int>(q - p);
+  p = q;
+  mantissa = value;
+  return count;
+}
+
+// The usual decimal spellings ("-0.1234", "5e-3"; at most 19 digits, the mantissa at most 2^53,
+// the power of ten at most 22 either way) by Clinger's fast path: both the mantissa and the
+// power are exact doubles, so one product or quotient is the correctly rounded value that
+// from_chars gives (it takes this path itself, after a costlier scan). True, with the number
+// removed from `number`, only when it is followed by a blank or the end; anything else is left to
+// from_chars.
+bool take_short_decimal(std::string_view& number, double& value) {
+  const char* p = number.data();
+  const char* const end = p + number.size();
+  const bool negative = *p == '-';
+  p += negative;
+  std::uint64_t mantissa = 0;
+  const int whole = append_digits(p, end, mantissa);
+  int fraction = 0;
+  if (p != end && *p == '.') {
+    ++p;
+    fraction = append_digits(p, end, mantissa);
+  }
+  if (whole + fraction == 0 || whole + fraction > 19) return false;
+  int exponent = -fraction;
+  if (p != end && (*p == 'e' || *p == 'E')) {
+    ++p;
+    const bool negative_exponent = p != end && *p == '-';
+    if (p != end && (*p == '-' || *p == '+')) ++p;
+    std::uint64_t written = 0;
+    const int digits = append_digits(p, end, written);
+    if (digits == 0 || digits > 3) return false;
+    exponent += negative_exponent ? -static_cast<int>(written) : static_cast<int>(written);
+  }
+  if (!at_token_end({p, static_cast<std::size_t>(end - p)}) || mantissa > kMaxExactMantissa ||
+      exponent < -kMaxExactPower || exponent > kMaxExactPower) {
+    return false;
+  }
+  const auto exact = static_cast<double>(mantissa);
+  value = exponent < 0 ? exact / kExactPowersOfTen[-exponent] : exact * kExactPowersOfTen[exponent];
+  if (negative) value = -value;
+  number.remove_prefix(static_cast<std::size_t>(p - number.data()));
+  return true;
+}
+
+}  // namespace
+
 bool take_double(std::string_view& text, double& value) {
   skip_blanks(text);
   std::string_view number = text;
   if (drop_plus_sign(number)) {
+    if (take_short_decimal(number, value)) {
+      text = number;
+      return true;
+    }
     const char* end = number.data() + number.size();
     const auto [stop, error] = std::from_chars(number.data(), end, value);
     // No number holds a blank, so one that stops at a blank (or the end) was the whole token.

@@ -54,6 +54,28 @@ bool take_integer_prefix(std::string_view& text, long long& value);
 // The first `c` at or after `from` in `text` (text.size() when none); from <= text.size().
 std::size_t find_from(std::string_view text, std::size_t from, char c);
 
+// The first `c` at or after a position of `text`, for positions that only move forward: searched
+// for again only once the one found is behind (a text without `c` is searched once), where
+// searching each line for it was a memchr call per line.
+class NextOccurrence {
+ public:
+  NextOccurrence(std::string_view text, char c) : text_(text), c_(c) {}
+  // text.size() when there is none; from <= text.size().
+  std::size_t at_or_after(std::size_t from) {
+    if (!known_ || found_ < from) {
+      found_ = find_from(text_, from, c_);
+      known_ = true;
+    }
+    return found_;
+  }
+
+ private:
+  std::string_view text_;
+  char c_;
+  std::size_t found_ = 0;
+  bool known_ = false;
+};
+
 // Lines of a text, without their end-of-line characters, counted from 1.
 class Lines {
  public:
@@ -72,6 +94,40 @@ class Lines {
   // file of lone CRs is not searched to its end at every line.
   std::size_t next_newline_ = 0;
   std::size_t next_return_ = 0;  // the same for '\r'
+};
+
+// The lines of a text that hold more than blanks, each without the blanks it starts with and, in
+// a format with comments, without its comment (from `comment` to the line's end).
+class ContentLines {
+ public:
+  static constexpr char kNoComments = '\0';  // text formats hold no NUL (require_text)
+  explicit ContentLines(std::string_view text, char comment = kNoComments)
+      : text_(text),
+        lines_(text),
+        next_comment_(text, comment),
+        comments_(comment != kNoComments) {}
+
+  bool next(std::string_view& line) {
+    while (lines_.next(line)) {
+      if (comments_) {
+        const auto start = static_cast<std::size_t>(line.data() - text_.data());
+        const std::size_t comment = next_comment_.at_or_after(start);
+        if (comment - start < line.size()) line = line.substr(0, comment - start);
+      }
+      skip_blanks(line);
+      if (!line.empty()) return true;
+    }
+    return false;
+  }
+  // The lines read so far, content or not; the bytes read so far.
+  std::size_t number() const { return lines_.number(); }
+  std::size_t offset() const { return lines_.offset(); }
+
+ private:
+  std::string_view text_;
+  Lines lines_;
+  NextOccurrence next_comment_;
+  bool comments_;
 };
 
 // Text formats must not hold NUL bytes: a binary file with a text format's extension is refused,
