@@ -20,7 +20,6 @@
 #include <cstring>
 #include <exception>
 #include <istream>
-#include <thread>
 
 #include "obj_reading.h"
 #include "readers.h"
@@ -28,10 +27,6 @@
 namespace holefill::io {
 namespace fs = std::filesystem;
 namespace {
-
-// From this size on, a file's two halves are read on two threads (below, a thread costs more
-// than it saves, and small files stay on one).
-constexpr std::size_t kTwoPartsFrom = std::size_t{8} << 20;
 
 // Gives the files mtllib names (tinyobjloader splits the statement) to the reading without
 // reading them.
@@ -182,25 +177,8 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report,
   // The second half on a thread of its own, the first here; then the second is appended, or
   // read again after the first where it could not be read alone.
   ObjReading second(path, true);
-  bool second_read = false;
-  std::thread thread;
-  try {
-    thread = std::thread([&] {
-      try {
-        second.read(text.substr(split));
-        second_read = true;
-      } catch (...) {  // read again below, where the first half's errors come first
-      }
-    });
-  } catch (const std::system_error&) {  // no thread to be had: one after the other
-  }
-  try {
-    reading.read(text.substr(0, split));
-  } catch (...) {
-    if (thread.joinable()) thread.join();
-    throw;
-  }
-  if (thread.joinable()) thread.join();
+  const bool second_read = read_in_two_parts([&] { reading.read(text.substr(0, split)); },
+                                             [&] { second.read(text.substr(split)); });
   if (!second_read || !reading.append(second)) reading.read(text.substr(split));
   return reading.finish(report);
 }

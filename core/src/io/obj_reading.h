@@ -20,6 +20,7 @@
 #include "holefill/io.h"
 #include "obj_statements.h"
 #include "soup.h"
+#include "two_parts.h"
 
 namespace holefill::io {
 
@@ -28,14 +29,6 @@ namespace holefill::io {
 // refer ahead to any number, which the end of the reading refuses, quoting it: a number that
 // does not fit an int is kept as kBeyond, and the first such by corner aside.
 inline constexpr int kBeyond = std::numeric_limits<int>::max();
-
-// Moves `from`'s elements to the end of `to`, and frees `from` (a part's arrays are freed as they
-// are appended, so that two copies of each are not held at once).
-template <class T>
-void append_and_free(std::vector<T>& to, std::vector<T>& from) {
-  to.insert(to.end(), from.begin(), from.end());
-  std::vector<T>().swap(from);
-}
 
 // One value per corner of one kind: vertex indices (from 0), or texture coordinate or normal
 // numbers (from 1, 0 for none; the column stays empty until a corner has one).

@@ -6,6 +6,7 @@
 
 #include "readers.h"
 #include "text_scan.h"
+#include "two_parts.h"
 
 namespace holefill::io {
 namespace fs = std::filesystem;
@@ -26,16 +27,6 @@ bool parse_off_keyword(std::string_view keyword, bool& three_dimensional) {
 
 namespace {
 
-// The next line with content, comments ('#' to the end of the line) removed.
-bool next_content(Lines& lines, std::string_view& line) {
-  while (lines.next(line)) {
-    line = line.substr(0, line.find('#'));
-    skip_blanks(line);
-    if (!line.empty()) return true;
-  }
-  return false;
-}
-
 struct OffCounts {
   unsigned long long vertices = 0, faces = 0;
   bool normals = false, colours = false;  // NOFF, COFF (or both)
@@ -43,9 +34,9 @@ struct OffCounts {
 
 // Reads the keyword and counts from `lines`, checking them against the `file_size` bytes of the
 // file (`lines` may hold only its first bytes).
-OffCounts parse_off_header(Lines& lines, std::uint64_t file_size, const fs::path& path) {
+OffCounts parse_off_header(ContentLines& lines, std::uint64_t file_size, const fs::path& path) {
   std::string_view line;
-  if (!next_content(lines, line)) fail(path, "holds no OFF header, only blank or comment lines");
+  if (!lines.next(line)) fail(path, "holds no OFF header, only blank or comment lines");
   std::string_view rest = line;
   const std::string_view keyword = take_token(rest);
   bool three_dimensional = true;
@@ -59,7 +50,7 @@ OffCounts parse_off_header(Lines& lines, std::uint64_t file_size, const fs::path
   if (rest.substr(0, 6) == "BINARY") {
     fail(path, "binary OFF is not supported; save it as ASCII OFF, PLY or OBJ");
   }
-  if (rest.empty() && !next_content(lines, rest)) fail(path, "ends after its header keyword");
+  if (rest.empty() && !lines.next(rest)) fail(path, "ends after its header keyword");
   const std::size_t counts_line = lines.number();
   long long counts[2] = {0, 0};
   for (auto& count : counts) {
@@ -159,85 +150,191 @@ bool read_off_face_colours(std::string_view rest, bool first_face, Soup& soup, s
   return true;
 }
 
-Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report) {
-  require_text(text, path, "OFF");
-  Lines lines(text);
-  const OffCounts counts = parse_off_header(lines, text.size(), path);
-  const unsigned long long vertex_count = counts.vertices, face_count = counts.faces;
+namespace {
+
+// Reads an OFF body's records (its content lines: the counted vertices, then the counted faces,
+// then lines that are ignored with a warning) into a soup: the whole body, or one part of it.
+class OffBody {
+ public:
+  OffBody(const OffCounts& counts, const fs::path& path) : counts_(counts), path_(path) {}
+
+  // Reads the records of `text`, which follows `lines_before` lines of the file and starts at
+  // record `first`. A file that ends before the counted records is refused only when `last`
+  // (else `text` is a first part, and the rest follows).
+  void read(std::string_view text, std::size_t lines_before, unsigned long long first, bool last);
+
+  // Appends `later`, read from where this part ends on; false, with nothing changed, when it
+  // could not be read alone (its faces' colours depend on the first face, read here).
+  bool append(OffBody& later);
+
+  // The soup, with the warnings for what was not kept.
+  Soup finish(LoadReport& report);
+
+  Soup& soup() { return soup_; }
+  // Where the text read last ends: records and lines before it.
+  unsigned long long records() const { return record_; }
+  std::size_t lines() const { return lines_; }
+
+ private:
+  void read_vertex(std::string_view line, unsigned long long v, std::size_t at);
+  void read_face(std::string_view line, unsigned long long f, std::size_t at);
+
+  const OffCounts& counts_;
+  const fs::path& path_;
+  Soup soup_;
+  unsigned long long record_ = 0;  // the next record to read
+  std::size_t lines_ = 0;
+  std::size_t faces_with_colours_ = 0, extra_lines_ = 0;
+};
+
+void OffBody::read(std::string_view text, std::size_t lines_before, unsigned long long first,
+                   bool last) {
+  const unsigned long long vertex_count = counts_.vertices, face_count = counts_.faces;
+  ContentLines lines(text, '#');
   std::string_view line;
-  Soup soup;
-  soup.positions.reserve(vertex_count);
-  for (unsigned long long v = 0; v < vertex_count; ++v) {
-    if (!next_content(lines, line)) {
-      fail(path, "ends after " + std::to_string(v) + " of its " + std::to_string(vertex_count) +
-                     " vertices (truncated?)");
+  for (record_ = first; lines.next(line); ++record_) {
+    const std::size_t at = lines_before + lines.number();
+    if (record_ < vertex_count) {
+      read_vertex(line, record_, at);
+    } else if (record_ - vertex_count < face_count) {
+      read_face(line, record_ - vertex_count, at);
+    } else {
+      ++extra_lines_;
     }
-    if (v == 0) plan_off_attributes(counts, line, soup);
-    Point p;
-    for (int axis = 0; axis < 3; ++axis) {
-      std::string_view unread = line;
-      if (!take_double(line, p[axis])) {
-        const std::string_view token = take_token(unread);
-        fail(path, at_line(lines.number()) + "vertex needs 3 numbers" +
-                       (token.empty() ? std::string() : ", got " + quoted(token)));
-      }
-    }
-    require_finite(p, v, lines.number(), path);
-    soup.positions.push_back(p);
-    read_columns(line, soup.vertex_values, lines.number(), path);
   }
-  std::size_t faces_with_colours = 0;
-  for (unsigned long long f = 0; f < face_count; ++f) {
-    if (!next_content(lines, line)) {
-      fail(path, "ends after " + std::to_string(f) + " of its " + std::to_string(face_count) +
-                     " faces (truncated?)");
-    }
-    long long corner_count = 0;
+  lines_ = lines_before + lines.number();
+  if (!last) return;
+  if (record_ < vertex_count) {
+    fail(path_, "ends after " + std::to_string(record_) + " of its " +
+                    std::to_string(vertex_count) + " vertices (truncated?)");
+  }
+  if (record_ - vertex_count < face_count) {
+    fail(path_, "ends after " + std::to_string(record_ - vertex_count) + " of its " +
+                    std::to_string(face_count) + " faces (truncated?)");
+  }
+}
+
+void OffBody::read_vertex(std::string_view line, unsigned long long v, std::size_t at) {
+  if (v == 0) plan_off_attributes(counts_, line, soup_);
+  Point p;
+  for (int axis = 0; axis < 3; ++axis) {
     std::string_view unread = line;
-    if (!take_integer(line, corner_count) || corner_count < 0) {
-      fail(path, at_line(lines.number()) + "a face must start with its number of corners, got " +
-                     quoted(take_token(unread)));
+    if (!take_double(line, p[axis])) {
+      const std::string_view token = take_token(unread);
+      fail(path_, at_line(at) + "vertex needs 3 numbers" +
+                      (token.empty() ? std::string() : ", got " + quoted(token)));
     }
-    for (long long c = 0; c < corner_count; ++c) {
-      unread = line;
-      long long index = 0;
-      if (!take_integer(line, index)) {
-        const std::string_view token = take_token(unread);
-        fail(path, at_line(lines.number()) + "face needs " + std::to_string(corner_count) +
-                       " vertex indices" +
-                       (token.empty() ? std::string() : ", got " + quoted(token)));
-      }
-      if (index < 0 || static_cast<unsigned long long>(index) >= vertex_count) {
-        fail(path, at_line(lines.number()) + "face refers to vertex " + std::to_string(index) +
-                       ", but the file has " + std::to_string(vertex_count) +
-                       " vertices (numbered from 0)");
-      }
-      soup.corners.push_back(static_cast<int>(index));
-    }
-    if (!read_off_face_colours(line, f == 0, soup, lines.number(), path)) ++faces_with_colours;
-    soup.end_face(soup.corners.size(), lines.number());
   }
-  settle_colour_types(soup.layout.vertex, soup.vertex_values);
-  settle_colour_types(soup.layout.face, soup.face_values);
-  if (faces_with_colours) {
+  require_finite(p, v, at, path_);
+  soup_.positions.push_back(p);
+  read_columns(line, soup_.vertex_values, at, path_);
+}
+
+void OffBody::read_face(std::string_view line, unsigned long long f, std::size_t at) {
+  long long corner_count = 0;
+  std::string_view unread = line;
+  if (!take_integer(line, corner_count) || corner_count < 0) {
+    fail(path_, at_line(at) + "a face must start with its number of corners, got " +
+                    quoted(take_token(unread)));
+  }
+  for (long long c = 0; c < corner_count; ++c) {
+    unread = line;
+    long long index = 0;
+    if (!take_integer(line, index)) {
+      const std::string_view token = take_token(unread);
+      fail(path_, at_line(at) + "face needs " + std::to_string(corner_count) + " vertex indices" +
+                      (token.empty() ? std::string() : ", got " + quoted(token)));
+    }
+    if (index < 0 || static_cast<unsigned long long>(index) >= counts_.vertices) {
+      fail(path_, at_line(at) + "face refers to vertex " + std::to_string(index) +
+                      ", but the file has " + std::to_string(counts_.vertices) +
+                      " vertices (numbered from 0)");
+    }
+    soup_.corners.push_back(static_cast<int>(index));
+  }
+  if (!read_off_face_colours(line, f == 0, soup_, at, path_)) ++faces_with_colours_;
+  soup_.end_face(soup_.corners.size(), at);
+}
+
+bool OffBody::append(OffBody& later) {
+  Soup& more = later.soup_;
+  const bool first_face_here = record_ > counts_.vertices;
+  if (first_face_here && !soup_.layout.face.empty() && more.face_count() != 0) return false;
+  append_and_free(soup_.positions, more.positions);
+  const std::size_t corners = soup_.corners.size();
+  append_and_free(soup_.corners, more.corners);
+  soup_.face_end.reserve(soup_.face_count() + more.face_count());
+  for (const std::size_t end : more.face_end) soup_.face_end.push_back(corners + end);
+  append_and_free(soup_.face_line, more.face_line);
+  if (!first_face_here) {
+    soup_.layout.face = more.layout.face;
+    soup_.face_values = std::move(more.face_values);
+  }
+  faces_with_colours_ += later.faces_with_colours_;
+  extra_lines_ += later.extra_lines_;
+  record_ = later.record_;
+  lines_ = later.lines_;
+  return true;
+}
+
+Soup OffBody::finish(LoadReport& report) {
+  settle_colour_types(soup_.layout.vertex, soup_.vertex_values);
+  settle_colour_types(soup_.layout.face, soup_.face_values);
+  if (faces_with_colours_) {
     report.warnings.push_back(
-        std::to_string(faces_with_colours) +
+        std::to_string(faces_with_colours_) +
         " faces' colours (numbers after their vertex indices where the first face has none) "
         "were not kept");
   }
-  std::size_t extra_lines = 0;
-  while (next_content(lines, line)) ++extra_lines;
-  if (extra_lines) {
-    report.warnings.push_back(std::to_string(extra_lines) + " lines after the last of the " +
-                              std::to_string(face_count) +
+  if (extra_lines_) {
+    report.warnings.push_back(std::to_string(extra_lines_) + " lines after the last of the " +
+                              std::to_string(counts_.faces) +
                               " faces the header counts were ignored (the header's counts may be "
                               "too small)");
   }
-  return soup;
+  return std::move(soup_);
+}
+
+}  // namespace
+
+Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report,
+               std::size_t split_near) {
+  require_text(text, path, "OFF");
+  ContentLines header(text, '#');
+  const OffCounts counts = parse_off_header(header, text.size(), path);
+  const std::size_t body = header.offset(), header_lines = header.number();
+  OffBody reading(counts, path);
+  reading.soup().positions.reserve(counts.vertices);
+  const std::size_t split = line_start_after(text, std::max(split_near, body));
+  // A vertex's attributes are planned from the first vertex line: read on one thread.
+  if (split >= text.size() || counts.normals || counts.colours) {
+    reading.read(text.substr(body), header_lines, 0, true);
+    return reading.finish(report);
+  }
+  // The second part on a thread of its own, which first counts the lines and records before it.
+  const std::string_view first = text.substr(body, split - body), second = text.substr(split);
+  OffBody later(counts, path);
+  const bool later_read =
+      read_in_two_parts([&] { reading.read(first, header_lines, 0, false); },
+                        [&] {
+                          ContentLines lines(first, '#');
+                          unsigned long long records = 0;
+                          for (std::string_view line; lines.next(line);) ++records;
+                          later.read(second, header_lines + lines.number(), records, true);
+                        });
+  if (!later_read || !reading.append(later)) {
+    reading.read(second, reading.lines(), reading.records(), true);
+  }
+  return reading.finish(report);
+}
+
+Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report) {
+  return parse_off(text, path, report,
+                   text.size() >= kTwoPartsFrom ? text.size() / 2 : std::string_view::npos);
 }
 
 void check_off_start(std::string_view first_bytes, std::uint64_t file_size, const fs::path& path) {
-  Lines lines(first_bytes);
+  ContentLines lines(first_bytes, '#');
   parse_off_header(lines, file_size, path);
   require_text(first_bytes, path, "OFF");
 }

@@ -7,32 +7,48 @@
 #include "ply_header.h"
 #include "readers.h"
 #include "text_scan.h"
+#include "two_parts.h"
 
 namespace holefill::io {
 namespace fs = std::filesystem;
 namespace {
 
+// The lines of an ASCII body that one reading reads: all of them, or a part (two_parts.h).
+struct BodyPart {
+  std::size_t begin = 0, end = std::string_view::npos;  // bytes of the body, at line starts
+  std::size_t lines_before = 0;                         // the body's lines before `begin`
+  bool last = true;                                     // the part ends the body
+};
+
 // Reads the values of a PLY body record by record, ASCII (one record a line) or binary, refusing
 // to read past its end or, in ASCII, past a record's line.
 class PlyBody {
  public:
-  PlyBody(std::string_view bytes, const PlyHeader& header, const fs::path& path)
+  PlyBody(std::string_view bytes, const PlyHeader& header, const fs::path& path,
+          const BodyPart& part = {})
       : bytes_(bytes),
-        lines_(bytes),
+        lines_(bytes.substr(part.begin, part.end - std::min(part.end, part.begin))),
         encoding_(header.encoding),
         path_(path),
-        line_offset_(header.header_lines) {}
+        line_offset_(header.header_lines + part.lines_before),
+        part_begin_(part.begin),
+        last_part_(part.last) {}
 
-  // Starts record `index` of the `count` records of `element`.
-  void begin_record(const std::string& element, unsigned long long index,
+  // Starts record `index` of the `count` records of `element`; false when a part that does not
+  // end the body has no more lines.
+  bool begin_record(const std::string& element, unsigned long long index,
                     unsigned long long count) {
     element_ = &element;
     index_ = index;
     count_ = count;
     record_line_ = 0;
-    if (encoding_ != PlyEncoding::Ascii) return;
-    if (!next_content_line(record_)) fail(path_, "ends before " + where() + " (truncated?)");
+    if (encoding_ != PlyEncoding::Ascii) return true;
+    if (!lines_.next(record_)) {
+      if (!last_part_) return false;
+      fail(path_, "ends before " + where() + " (truncated?)");
+    }
     record_line_ = line_number();
+    return true;
   }
 
   // Ends the record: in ASCII, its line must hold no more values.
@@ -56,32 +72,28 @@ class PlyBody {
     return encoding_ == PlyEncoding::Ascii ? read_text(type) : read_binary(type);
   }
 
-  // Bytes left; for ASCII, an upper bound on the values left.
+  // Bytes left (to the body's end, whatever part is read); for ASCII, an upper bound on the
+  // values left.
   std::size_t remaining() const {
-    return encoding_ == PlyEncoding::Ascii ? record_.size() + 1 + bytes_.size() - lines_.offset()
-                                           : bytes_.size() - position_;
+    return encoding_ == PlyEncoding::Ascii
+               ? record_.size() + 1 + bytes_.size() - part_begin_ - lines_.offset()
+               : bytes_.size() - position_;
   }
 
-  // What follows the last record, for a warning: "N lines" or "N bytes", or "" when nothing does.
-  std::string leftover() {
-    if (encoding_ != PlyEncoding::Ascii) {
-      return remaining() ? std::to_string(remaining()) + " bytes" : std::string();
-    }
+  // What follows the last record, for a warning: "N bytes" (binary), or the number of lines
+  // (ASCII: of this part).
+  std::string leftover_bytes() const {
+    return remaining() ? std::to_string(remaining()) + " bytes" : std::string();
+  }
+  std::size_t lines_read() const { return lines_.number(); }
+  std::size_t leftover_lines() {
     std::size_t count = 0;
-    for (std::string_view line; next_content_line(line);) ++count;
-    return count ? std::to_string(count) + " lines" : std::string();
+    for (std::string_view line; lines_.next(line);) ++count;
+    return count;
   }
 
  private:
   std::size_t line_number() const { return line_offset_ + lines_.number(); }
-
-  bool next_content_line(std::string_view& line) {
-    while (lines_.next(line)) {
-      skip_blanks(line);
-      if (!line.empty()) return true;
-    }
-    return false;
-  }
 
   template <class T>
   static double load(const unsigned char* raw) {
@@ -122,25 +134,21 @@ class PlyBody {
     return 0.0;
   }
 
+  // Numbers are read in place (take_double, take_integer); the token is cut out only for a
+  // message.
   double read_text(PlyType type) {
-    const std::string_view token = take_token(record_);
-    if (token.empty()) {
-      fail(path_, where() + " has fewer values than the header's properties give it");
-    }
+    const std::string_view unread = record_;
     if (is_integer_type(type)) {
       long long value = 0;
-      if (!parse_integer(token, value)) {
-        fail(path_, where() + ": expected a whole number, got " + quoted(token));
-      }
+      if (!take_integer(record_, value)) refuse_text_value(unread, "expected a whole number");
       if (!fits(value, type)) {
-        fail(path_, where() + ": " + quoted(token) + " does not fit the property's type");
+        fail(path_,
+             where() + ": " + quoted(first_token(unread)) + " does not fit the property's type");
       }
       return static_cast<double>(value);
     }
     double value = 0.0;
-    if (!parse_double(token, value)) {
-      fail(path_, where() + ": expected a number, got " + quoted(token));
-    }
+    if (!take_double(record_, value)) refuse_text_value(unread, "expected a number");
     // What the header says the value is: a float property holds a float, as in a binary file.
     if (type != PlyType::Float32) return value;
     if (!(std::abs(value) <= std::numeric_limits<float>::max())) {
@@ -149,12 +157,24 @@ class PlyBody {
     return static_cast<double>(static_cast<float>(value));
   }
 
+  static std::string_view first_token(std::string_view text) { return take_token(text); }
+
+  [[noreturn]] void refuse_text_value(std::string_view unread, const char* expected) const {
+    const std::string_view token = first_token(unread);
+    if (token.empty()) {
+      fail(path_, where() + " has fewer values than the header's properties give it");
+    }
+    fail(path_, where() + ": " + expected + ", got " + quoted(token));
+  }
+
   std::string_view bytes_;
-  Lines lines_;              // ASCII: the body's lines
+  ContentLines lines_;       // ASCII: the lines of the part read
   std::string_view record_;  // ASCII: what is left of the current record's line
   PlyEncoding encoding_;
   const fs::path& path_;
   std::size_t line_offset_;
+  std::size_t part_begin_;
+  bool last_part_;
   std::size_t position_ = 0;              // binary: the next byte
   const std::string* element_ = nullptr;  // the current record's element, index and line
   unsigned long long index_ = 0, count_ = 0;
@@ -188,10 +208,12 @@ struct ElementColumns {
   std::vector<std::vector<double>>* columns = nullptr;
 };
 
-// Reads one element's records; positions and face corners go into `soup` (corners checked
-// against the vertex count once all are read), other values into their columns.
-void read_element(PlyBody& body, const PlyElement& element, const ElementColumns& kept, Soup& soup,
-                  const fs::path& path) {
+// Reads one element's records from record `first` on; positions and face corners go into `soup`
+// (corners checked against the vertex count once all are read), other values into their
+// columns. Returns the records read (fewer than asked where a part of the body ends).
+unsigned long long read_element(PlyBody& body, const PlyElement& element,
+                                const ElementColumns& kept, Soup& soup, unsigned long long first,
+                                const fs::path& path) {
   const bool is_vertex = element.name == "vertex";
   const bool is_face = element.name == "face";
   const int axis_of[3] = {find_property(element, {"x"}, false),
@@ -199,14 +221,15 @@ void read_element(PlyBody& body, const PlyElement& element, const ElementColumns
                           find_property(element, {"z"}, false)};
   const int face_list = is_face ? face_list_of(element) : -1;
   // The header's counts fit the file; the room is what the mesh takes the positions with.
-  if (is_vertex) soup.positions.reserve(mesh_capacity(element.count));
+  const unsigned long long count = element.count - first;
+  if (is_vertex) soup.positions.reserve(first == 0 ? mesh_capacity(count) : count);
   if (is_face) {
-    soup.face_end.reserve(element.count);
+    soup.face_end.reserve(count);
     // Triangles, most often; each corner takes at least a byte of the file.
-    soup.corners.reserve(std::min<std::size_t>(3 * element.count, body.remaining()));
+    soup.corners.reserve(std::min<std::size_t>(3 * count, body.remaining()));
   }
-  for (unsigned long long r = 0; r < element.count; ++r) {
-    body.begin_record(element.name, r, element.count);
+  for (unsigned long long r = first; r < element.count; ++r) {
+    if (!body.begin_record(element.name, r, element.count)) return r - first;
     Point p(0.0, 0.0, 0.0);
     for (int i = 0; i < static_cast<int>(element.properties.size()); ++i) {
       const auto& property = element.properties[i];
@@ -244,6 +267,27 @@ void read_element(PlyBody& body, const PlyElement& element, const ElementColumns
     }
     if (is_face) soup.end_face(soup.corners.size(), 0);
   }
+  return count;
+}
+
+// Reads the records of `body` from record `first` (counted over all elements in order) on, as
+// far as the part it reads goes; returns the number of the record after the last one read.
+unsigned long long read_records(PlyBody& body, const PlyHeader& header,
+                                const std::vector<ElementColumns>& plan, Soup& soup,
+                                unsigned long long first, const fs::path& path) {
+  unsigned long long before = 0;  // the records of the elements before e
+  for (std::size_t e = 0; e < header.elements.size(); ++e) {
+    const unsigned long long count = header.elements[e].count;
+    if (first < before + count) {
+      const unsigned long long from = first - before;
+      const unsigned long long read =
+          read_element(body, header.elements[e], plan[e], soup, from, path);
+      if (read < count - from) return before + from + read;
+      first = before + count;
+    }
+    before += count;
+  }
+  return std::max(first, before);
 }
 
 // The vertex and face properties the mesh keeps (every scalar one but x, y, z), their columns in
@@ -306,15 +350,84 @@ void check_ply_start(std::string_view first_bytes, std::uint64_t file_size, cons
   }
 }
 
-Soup parse_ply(std::string_view bytes, const fs::path& path, LoadReport& report) {
+namespace {
+
+// Appends the soup `later` read of a body's second part to `soup` (their columns alike).
+void append_part(Soup& soup, Soup& later) {
+  append_and_free(soup.positions, later.positions);
+  const std::size_t corners = soup.corners.size();
+  append_and_free(soup.corners, later.corners);
+  soup.face_end.reserve(soup.face_count() + later.face_count());
+  for (const std::size_t end : later.face_end) soup.face_end.push_back(corners + end);
+  for (std::size_t c = 0; c < later.vertex_values.size(); ++c) {
+    append_and_free(soup.vertex_values[c], later.vertex_values[c]);
+  }
+  for (std::size_t c = 0; c < later.face_values.size(); ++c) {
+    append_and_free(soup.face_values[c], later.face_values[c]);
+  }
+}
+
+// Reads an ASCII body in two parts, the second on a thread of its own, from `split` (a line
+// start) on; returns the lines after the last record.
+std::size_t read_ascii_in_two_parts(std::string_view body_bytes, std::size_t split,
+                                    const PlyHeader& header,
+                                    const std::vector<ElementColumns>& plan, Soup& soup,
+                                    const fs::path& path) {
+  PlyBody first(body_bytes, header, path, {0, split, 0, false});
+  const std::string_view first_text = body_bytes.substr(0, split);
+  unsigned long long records = 0;
+  std::size_t leftover = 0;
+  Soup later;
+  LoadReport ignored;  // the warnings are the first reading's
+  const std::vector<ElementColumns> later_plan = plan_attributes(header, later, ignored);
+  std::size_t later_leftover = 0;
+  const bool later_read = read_in_two_parts(
+      [&] {
+        records = read_records(first, header, plan, soup, 0, path);
+        leftover = first.leftover_lines();
+      },
+      [&] {
+        ContentLines lines(first_text);
+        unsigned long long before = 0;
+        for (std::string_view line; lines.next(line);) ++before;
+        PlyBody second(body_bytes, header, path, {split, std::string_view::npos, lines.number()});
+        read_records(second, header, later_plan, later, before, path);
+        later_leftover = second.leftover_lines();
+      });
+  if (later_read) {
+    append_part(soup, later);
+    return leftover + later_leftover;
+  }
+  PlyBody second(body_bytes, header, path, {split, std::string_view::npos, first.lines_read()});
+  read_records(second, header, plan, soup, records, path);
+  return leftover + second.leftover_lines();
+}
+
+}  // namespace
+
+Soup parse_ply(std::string_view bytes, const fs::path& path, LoadReport& report,
+               std::size_t split_near) {
   const PlyHeader header = parse_ply_header(bytes, bytes.size(), path);
   const std::string_view body_bytes = bytes.substr(header.body_offset);
-  if (header.encoding == PlyEncoding::Ascii) require_text(body_bytes, path, "ASCII PLY");
-  PlyBody body(body_bytes, header, path);
+  const bool ascii = header.encoding == PlyEncoding::Ascii;
+  if (ascii) require_text(body_bytes, path, "ASCII PLY");
   Soup soup;
   const std::vector<ElementColumns> plan = plan_attributes(header, soup, report);
-  for (std::size_t e = 0; e < header.elements.size(); ++e) {
-    read_element(body, header.elements[e], plan[e], soup, path);
+  std::string leftover;
+  const std::size_t split = split_near > header.body_offset
+                                ? line_start_after(body_bytes, split_near - header.body_offset)
+                                : body_bytes.size();
+  if (ascii && split < body_bytes.size()) {
+    const std::size_t lines = read_ascii_in_two_parts(body_bytes, split, header, plan, soup, path);
+    if (lines) leftover = std::to_string(lines) + " lines";
+  } else {
+    PlyBody body(body_bytes, header, path);
+    read_records(body, header, plan, soup, 0, path);
+    if (!ascii) {
+      leftover = body.leftover_bytes();
+    } else if (const std::size_t lines = body.leftover_lines()) {
+      leftover = std::to_string(lines) + " lines";
+    }
   }
   if (!header.unknown_lines.empty()) {
     report.warnings.push_back(std::to_string(header.unknown_lines.size()) +
@@ -322,7 +435,6 @@ Soup parse_ply(std::string_view bytes, const fs::path& path, LoadReport& report)
                               "first is line " +
                               std::to_string(header.unknown_lines.front()) + ")");
   }
-  const std::string leftover = body.leftover();
   if (!leftover.empty()) {
     report.warnings.push_back(leftover + " after the last record the header counts were ignored " +
                               "(the header's counts may be too small)");
@@ -338,6 +450,11 @@ Soup parse_ply(std::string_view bytes, const fs::path& path, LoadReport& report)
     }
   }
   return soup;
+}
+
+Soup parse_ply(std::string_view bytes, const fs::path& path, LoadReport& report) {
+  return parse_ply(bytes, path, report,
+                   bytes.size() >= kTwoPartsFrom ? bytes.size() / 2 : std::string_view::npos);
 }
 
 }  // namespace holefill::io

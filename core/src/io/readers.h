@@ -37,11 +37,23 @@ Soup parse_obj(std::string_view text, const std::filesystem::path& path, LoadRep
 // ASCII OFF, 3D, with the optional ST/C/N prefixes of the keyword. Lines after the counted
 // faces are ignored with a warning.
 Soup parse_off(std::string_view text, const std::filesystem::path& path, LoadReport& report);
+// The same, with the body cut at the first line boundary from byte `split_near` on, when there
+// is one, and the part after it read on a second thread: the same soup, warnings and messages.
+// The three-argument form cuts texts of 8 MB and more in the middle (tests cut small ones
+// anywhere). NOFF and COFF files, whose vertex attributes the first vertex line sets, are read
+// whole.
+Soup parse_off(std::string_view text, const std::filesystem::path& path, LoadReport& report,
+               std::size_t split_near);
 
 // PLY, ASCII or binary of either byte order: the vertex element's x, y, z and the face
 // element's vertex index list. ASCII is read one record a line; a line with more or fewer values
 // than the header's properties is refused, naming it. Data after the counted records: a warning.
 Soup parse_ply(std::string_view bytes, const std::filesystem::path& path, LoadReport& report);
+// The same, with an ASCII body cut at the first line boundary from byte `split_near` of the file
+// on, when there is one, and the part after it read on a second thread: the same soup, warnings
+// and messages. The three-argument form cuts files of 8 MB and more in the middle.
+Soup parse_ply(std::string_view bytes, const std::filesystem::path& path, LoadReport& report,
+               std::size_t split_near);
 
 // STL, binary (when the size matches the header's count) or ASCII; equal corners are welded.
 Soup parse_stl(std::string_view bytes, const std::filesystem::path& path, LoadReport& report);

@@ -1,0 +1,219 @@
+// A big OBJ, OFF or ASCII PLY is read in two parts on two threads (two_parts.h): cut at every
+// line of files that carry state across the cut (OBJ: relative indices into the first part,
+// materials, groups, objects and smoothing groups set before it, colours, texture coordinates
+// and normals on one side only, material libraries, ignored statements, continued lines; OFF and
+// PLY: the vertex and face records, colours typed by the first face, comments, blank and extra
+// lines; all: mixed line ends), with errors of every kind on either side, the soup, the report
+// and every error message are those of the one-thread reading, byte for byte.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "io/readers.h"
+#include "robust_test_util.h"
+
+namespace holefill::testing {
+namespace {
+
+std::string hex(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%a ", value);
+  return text;
+}
+
+template <class Values>
+std::string listed(const Values& values) {
+  std::string out;
+  for (const auto& value : values) out += std::to_string(value) + ' ';
+  return out + '\n';
+}
+
+using Parse = io::Soup (*)(std::string_view, const std::filesystem::path&, LoadReport&,
+                           std::size_t);
+
+// Everything a reading returns, as text (positions bit for bit), or the error it threw.
+std::string read_whole_or_cut(const std::string& text, std::size_t split_near,
+                              Parse parse = io::parse_obj, const char* path = "/data/cut.obj") {
+  LoadReport report;
+  io::Soup soup;
+  try {
+    soup = parse(text, path, report, split_near);
+  } catch (const std::exception& error) {
+    return std::string("refused: ") + error.what() +
+           (dynamic_cast<const FileError*>(&error) ? " (FileError)" : " (other)");
+  }
+  std::string out;
+  for (const auto& p : soup.positions) out += hex(p[0]) + hex(p[1]) + hex(p[2]) + '\n';
+  for (const auto& values : soup.vertex_values) out += "colour " + listed(values);
+  for (const auto& attribute : soup.layout.vertex) {
+    out += attribute.name + ' ' + std::to_string(static_cast<int>(attribute.type)) + ' ';
+  }
+  for (const auto& values : soup.face_values) out += "face values " + listed(values);
+  for (const auto& attribute : soup.layout.face) {
+    out += attribute.name + ' ' + std::to_string(static_cast<int>(attribute.type)) + ' ';
+  }
+  out += "\ncorners " + listed(soup.corners) + "ends " + listed(soup.face_end) + "lines " +
+         listed(soup.face_line) + "texcoord " + listed(soup.corner_texcoord) + "normal " +
+         listed(soup.corner_normal) + "material " + listed(soup.face_material) + "group " +
+         listed(soup.face_group) + "object " + listed(soup.face_object) + "smoothing " +
+         listed(soup.face_smoothing);
+  const ObjTables& obj = soup.obj;
+  for (const auto& uvw : obj.texcoords) out += hex(uvw[0]) + hex(uvw[1]) + hex(uvw[2]);
+  for (const auto& n : obj.normals) out += hex(n[0]) + hex(n[1]) + hex(n[2]);
+  out += "\nsizes " + std::to_string(obj.texcoord_size) + ' ' + std::to_string(obj.file_texcoords) +
+         ' ' + std::to_string(obj.file_normals) + '\n';
+  for (const auto* names : {&obj.materials, &obj.groups, &obj.objects, &obj.smoothing_groups}) {
+    for (const auto& name : *names) out += name + '|';
+    out += '\n';
+  }
+  for (const auto& file : obj.material_libraries) out += file.string() + '|';
+  out += "\nignored " + std::to_string(report.elements_ignored) + " empty " +
+         std::to_string(report.degenerate_faces_dropped) + '\n';
+  for (const auto& warning : report.warnings) out += warning + '\n';
+  return out;
+}
+
+// Reads `text` whole, then cut after every line, and expects the same each time.
+void expect_same_at_every_cut(const std::string& text, Parse parse = io::parse_obj,
+                              const char* path = "/data/cut.obj") {
+  const std::string whole = read_whole_or_cut(text, std::string::npos, parse, path);
+  int cuts = 0;
+  for (std::size_t at = 0; at < text.size(); ++at) {
+    if (at > 0 && text[at - 1] != '\n') continue;
+    ++cuts;
+    ASSERT_EQ(read_whole_or_cut(text, at, parse, path), whole) << "cut at byte " << at << " of\n"
+                                                               << text;
+  }
+  EXPECT_GT(cuts, 3);
+}
+
+// `text` with its line ends mixed: of every three LFs, one kept, one CR LF, one a lone CR.
+std::string with_mixed_line_ends(std::string text) {
+  for (std::size_t at = text.find('\n'), n = 0; at != std::string::npos;
+       at = text.find('\n', at + 1), ++n) {
+    if (n % 3 == 1) text.insert(at++, "\r");
+    if (n % 3 == 2) text[at] = '\r';
+  }
+  return text;
+}
+
+const std::string kStateAcrossTheCut =
+    "mtllib a.mtl\n# a comment\nv 0 0 0\nv 1 0 0 0.5 0.25 1\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\n"
+    "vn 0 0 1\ng left side\nusemtl red\ns 1\no first\nf 1 2 3\nf -3/-2 -2/-1 -1/1\n"
+    "f 2/1/1 4/2/1 3/1/-1\nl 1 2\nfoo bar\nv 2 0 0\nv 2 1 0\nf -5 -2 -1\nusemtl blue\n"
+    "f 2 5 4\\\n 6\ng\nf 3 4 6\nmtllib b.mtl a.mtl\ns off\nfo 4 6 5\nusemtl red\nf\n"
+    "vt 0.5 0.5 0.5\nf 1/-1 2/-1 3/3\nf 1/1 2/2 4\nv 3 3 3 0 0 0\nf -1 -2 -3\nbar\n"
+    "o second\ng left side\nf 1//1 5//1 6//-1\ncurv 0 1 1 2\n";
+
+TEST(ObjParts, StateCarriedAcrossTheCutReadsAsOneReading) {
+  expect_same_at_every_cut(kStateAcrossTheCut);
+  // Lone CRs, CR LF and continued lines with CR LF: lines counted as one reading counts them.
+  std::string mixed = kStateAcrossTheCut;
+  for (std::size_t at = 0, n = 0; (at = mixed.find('\n', at)) != std::string::npos; ++n) {
+    if (n % 3 == 1) mixed.insert(at++, "\r");
+    if (n % 3 == 2 && (at == 0 || mixed[at - 1] != '\\')) mixed[at] = '\r';
+    ++at;
+  }
+  expect_same_at_every_cut(mixed);
+}
+
+TEST(ObjParts, NothingButNamesOrNothingAtAllOnOneSide) {
+  expect_same_at_every_cut("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nusemtl m\ng g\no o\ns 2\n");
+  expect_same_at_every_cut("usemtl m\ng g\no o\ns 2\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n\n\n");
+  expect_same_at_every_cut("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 3 2 1\nusemtl m\nf 1 2 3\n");
+  expect_same_at_every_cut("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\nf 1 2 3\nf 1 2 3\n");
+}
+
+TEST(ObjParts, ErrorsOnEitherSideAreOneReadingsMessages) {
+  const std::string start = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1 2 3\n";
+  for (const std::string bad :
+       {"f -4 -3 -2\n", "f 1/-2 2/1 3/1\n", "f 1//-2 2//1 3//1\n", "f 0 1 2\n", "f 1 2 3x\n",
+        "v 1 x 0\n", "v 1e999 0 0\n", "vt\n", "vn 0 0\n", "f 1 2 9\n", "f 1/7 2/1 3/1\n",
+        "f 1//5 2//1 3//1\n", "f 1 2 99999999999\n", "f 1 -99999999999 3\n"}) {
+    expect_same_at_every_cut(start + bad + start + "f -1 -2 -3\n");
+    expect_same_at_every_cut(start + "f -1 -2 -3\n" + start + bad + "f 4 5 6\n");
+    // An error in each half: the first one's is the message.
+    expect_same_at_every_cut(start + bad + start + "f 1 2 3 x\nf 1 2 77\n");
+  }
+}
+
+void expect_same_off_at_every_cut(const std::string& text) {
+  expect_same_at_every_cut(text, io::parse_off, "/data/cut.off");
+  expect_same_at_every_cut(with_mixed_line_ends(text), io::parse_off, "/data/cut.off");
+}
+
+const std::string kOffStart = "OFF # a comment\n\n4 3 0\n0 0 0\n1 0 0 # c\n\n  0 1 0\n";
+
+TEST(OffParts, RecordsCommentsAndExtraLinesReadAsOneReading) {
+  expect_same_off_at_every_cut(kOffStart + "1 1 0\n3 0 1 2\n# c\n3 1 3 2\n4 0 1 3 2\n");
+  expect_same_off_at_every_cut(
+      "OFF 4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 2\n"
+      "x\n\n y z\n");
+  // Colours typed by the first face (on either side of the cut), kept or counted as dropped.
+  expect_same_off_at_every_cut(kOffStart + "1 1 0\n3 0 1 2 1 0 0\n3 1 3 2 0.5 1 1\n3 0 1 3\n");
+  expect_same_off_at_every_cut(kOffStart + "1 1 0\n3 0 1 2\n3 1 3 2 255 0 0\n3 0 1 3 1 1 1\n");
+  // COFF's vertex colours, planned from the first vertex line: read whole.
+  expect_same_off_at_every_cut("COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0 0 1 0\n0 1 0 0 0 1\n3 0 1 2\n");
+}
+
+TEST(OffParts, ErrorsOnEitherSideAreOneReadingsMessages) {
+  const std::string vertices = "OFF\n6 4 0\n0 0 0\n1 0 0\n0 1 0\n";
+  const std::string more = "1 1 0\n2 0 0\n2 1 0\n";
+  for (const std::string bad : {"1 x 0\n", "1 1e999 0\n", "1 1\n", "1 1 0 0.5x\n"}) {
+    expect_same_off_at_every_cut(vertices + bad + more.substr(6) + "3 0 1 2\n3 1 3 2\n" +
+                                 "3 0 1 3\n3 3 4 5\n");
+  }
+  for (const std::string bad : {"3 0 1 9\n", "3 0 1 -1\n", "3x 0 1 2\n", "-3 0 1 2\n", "3 0 1\n",
+                                "3 0 1 2x\n", "3 0 1 99999999999999999999\n"}) {
+    expect_same_off_at_every_cut(vertices + more + bad + "3 1 3 2\n3 0 1 3\n3 3 4 5\n");
+    expect_same_off_at_every_cut(vertices + more + "3 1 3 2\n3 0 1 3\n3 3 4 5\n" + bad);
+    // An error in each part: the first one's is the message.
+    expect_same_off_at_every_cut(vertices + more + bad + "3 1 3 2\n3 0 1 3\n3 3 4 x\n");
+  }
+  // Truncated in the vertices, in the faces.
+  expect_same_off_at_every_cut(vertices + "1 1 0\n");
+  expect_same_off_at_every_cut(vertices + more + "3 1 3 2\n3 0 1 3\n");
+}
+
+void expect_same_ply_at_every_cut(const std::string& text) {
+  expect_same_at_every_cut(text, io::parse_ply, "/data/cut.ply");
+  expect_same_at_every_cut(with_mixed_line_ends(text), io::parse_ply, "/data/cut.ply");
+}
+
+const std::string kPlyHeader =
+    "ply\nformat ascii 1.0\ncomment c\nelement vertex 5\nproperty float x\nproperty float y\n"
+    "property double z\nproperty uchar red\nelement edge 2\nproperty int a\nproperty int b\n"
+    "element face 4\nproperty list uchar int vertex_indices\nproperty short flag\n"
+    "end_header\n";
+const std::string kPlyVertices = "0 0 0 1\n1 0 0 2\n\n 0 1 0 3\n1 1 0.1 4\n2 0 0 5\n";
+const std::string kPlyEdges = "0 1\n1 2\n";
+
+TEST(PlyParts, RecordsOfEveryElementReadAsOneReading) {
+  const std::string faces = "3 0 1 2 -1\n3 1 3 2 7\n4 1 4 3 2 0\n  3 0 1 3 1\n";
+  expect_same_ply_at_every_cut(kPlyHeader + kPlyVertices + kPlyEdges + faces);
+  // Lines after the last record: counted on either side.
+  expect_same_ply_at_every_cut(kPlyHeader + kPlyVertices + kPlyEdges + faces + "1 2\n\n3 4\n");
+}
+
+TEST(PlyParts, ErrorsOnEitherSideAreOneReadingsMessages) {
+  const std::string start = kPlyHeader + kPlyVertices + kPlyEdges;
+  const std::string first_face = "3 0 1 2 -1\n", middle_faces = "3 1 3 2 7\n4 1 4 3 2 0\n";
+  for (const std::string bad :
+       {"1 x 0 2\n", "1 1e999 0 2\n", "1 1 0 300\n", "1 1 0\n", "1 1 0 2 2\n", "1 1 0 2x\n"}) {
+    expect_same_ply_at_every_cut(kPlyHeader + bad + kPlyVertices.substr(8) + kPlyEdges +
+                                 first_face + middle_faces + first_face);
+  }
+  for (const std::string bad : {"3 0 1 9 0\n", "3 0 1 -1 0\n", "3 0 1 1.5 0\n", "250 0 1 2 0\n",
+                                "3 0 1 2 99999\n", "3 0 1 2\n"}) {
+    expect_same_ply_at_every_cut(start + bad + middle_faces + first_face);
+    expect_same_ply_at_every_cut(start + first_face + middle_faces + bad);
+    // An error in each part: the first one's is the message.
+    expect_same_ply_at_every_cut(start + bad + middle_faces + "3 0 x 1 0\n");
+  }
+  // Truncated in the vertices, in the faces.
+  expect_same_ply_at_every_cut(kPlyHeader + kPlyVertices.substr(0, 16));
+  expect_same_ply_at_every_cut(start + first_face + "3 1 3 2 7\n");
+}
+
+}  // namespace
+}  // namespace holefill::testing
