@@ -36,7 +36,7 @@ void tell_pieces(const PreparedMesh& prepared, const PreparationChoice& choice,
         << choice.remove_pieces_up_to << " faces (" << prepared.removed.faces << " faces, "
         << prepared.removed.vertices << " vertices)\n";
   }
-  const MeshPieces& p = prepared.pieces;
+  const PieceCounts& p = prepared.pieces;
   if (p.lone_triangles + p.small_pieces == 0) return;
   auto count = [](std::size_t n, const std::string& what) {
     return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
@@ -85,11 +85,15 @@ PreparedMesh prepare_mesh(Mesh& mesh, const PreparationChoice& choice, const std
   if (choice.remove_pieces_up_to > 0) {
     prepared.removed = remove_small_pieces(mesh, choice.remove_pieces_up_to);
   }
-  prepared.pieces = mesh_pieces(mesh);
-  tell_pieces(prepared, choice, path, out);
-  prepared.holes = find_holes(mesh);
-  if (separate_touching_holes(mesh, prepared.holes) > 0) prepared.holes = find_holes(mesh);
-  prepared.classes = classify_loops(mesh, prepared.holes, prepared.pieces);
+  {  // the pieces' lists (8 bytes a face) are freed before the holes are filled
+    const MeshPieces pieces = mesh_pieces(mesh);
+    prepared.pieces = {pieces.pieces.size(), pieces.lone_triangles, pieces.small_pieces,
+                       pieces.largest_small_piece};
+    tell_pieces(prepared, choice, path, out);
+    prepared.holes = find_holes(mesh);
+    if (separate_touching_holes(mesh, prepared.holes) > 0) prepared.holes = find_holes(mesh);
+    prepared.classes = classify_loops(mesh, prepared.holes, pieces);
+  }
   for (std::size_t i = 0; i < prepared.holes.size(); ++i) {
     const Hole& hole = prepared.holes[i];
     const LoopClass& c = prepared.classes[i];

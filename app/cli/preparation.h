@@ -25,11 +25,19 @@ struct PreparationChoice {
   bool keep_borders = false;            // --keep-borders
 };
 
+// What the report says of the mesh's pieces (their face lists are freed before filling).
+struct PieceCounts {
+  std::size_t pieces = 0;
+  std::size_t lone_triangles = 0;
+  std::size_t small_pieces = 0;
+  std::size_t largest_small_piece = 0;  // faces of the largest small piece (or lone triangle)
+};
+
 struct PreparedMesh {
   bool stitched = false;  // stitching ran
   StitchReport stitch;
   RemovedPieces removed;
-  MeshPieces pieces;
+  PieceCounts pieces;
   std::vector<Hole> holes;         // find_holes after the steps above
   std::vector<LoopClass> classes;  // one per hole
   std::vector<int> ids_to_fill;    // the holes to fill: no flat piece, no border when kept

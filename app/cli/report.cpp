@@ -80,7 +80,7 @@ void add_preparation(const PreparedMesh& p, Json& document) {
   } else {
     document["stitch"] = nullptr;
   }
-  document["pieces"] = {{"count", p.pieces.pieces.size()},
+  document["pieces"] = {{"count", p.pieces.pieces},
                         {"lone_triangles", p.pieces.lone_triangles},
                         {"small_pieces", p.pieces.small_pieces},
                         {"largest_small_piece_faces", p.pieces.largest_small_piece},

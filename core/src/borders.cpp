@@ -26,13 +26,13 @@ Point vector_area(const Mesh& mesh, const Hole& hole) {
 
 // Every vertex of the piece lies on the plane of its loop `hole` (up to rounding): a patch across
 // the loop would lie on the piece.
-bool piece_lies_in_loop_plane(const Mesh& mesh, const MeshPiece& piece, const Hole& hole,
-                              const Point& vector_area) {
+bool piece_lies_in_loop_plane(const Mesh& mesh, std::span<const FaceHandle> piece_faces,
+                              const Hole& hole, const Point& vector_area) {
   const double length = vector_area.norm();
   if (length == 0.0) return false;
   const Point normal = vector_area / length;
   const double tolerance = kFlatRelativeTolerance * hole.perimeter;
-  for (const auto f : piece.faces) {
+  for (const auto f : piece_faces) {
     for (const auto v : mesh.fv_range(f)) {
       if (std::abs(OpenMesh::dot(mesh.point(v) - hole.centroid, normal)) > tolerance) return false;
     }
@@ -45,13 +45,13 @@ bool piece_lies_in_loop_plane(const Mesh& mesh, const MeshPiece& piece, const Ho
 // area.
 constexpr double kFoldedShareOfHeightField = 0.01;
 
-bool piece_is_height_field_over(const Mesh& mesh, const MeshPiece& piece,
+bool piece_is_height_field_over(const Mesh& mesh, const MeshPieces& pieces, const MeshPiece& piece,
                                 const Point& vector_area) {
   // The sum only grows: once over the limit it stays over (most pieces are no height field,
   // and summing all of a big one's faces took 6 % of filling a 1.4M-face mesh).
   const double limit = kFoldedShareOfHeightField * piece.area;
   double folded = 0.0;
-  for (const auto f : piece.faces) {
+  for (const auto f : pieces.faces_of(piece)) {
     const Point n = mesh.calc_face_normal(f);
     if (OpenMesh::dot(n, vector_area) >= 0.0) folded += mesh.calc_face_area(f);
     if (folded > limit) return false;
@@ -102,13 +102,13 @@ std::vector<LoopClass> classify_loops(const Mesh& mesh, const std::vector<Hole>&
     const double closed_area = piece.area + enclosed_sum[c.piece] - c.enclosed_area;
     c.spanned_share = closed_area > 0.0 ? c.enclosed_area / closed_area : 0.0;
     const bool widest_loop = widest[c.piece] == static_cast<int>(i);
-    if (widest_loop && piece_lies_in_loop_plane(mesh, piece, holes[i], areas[i])) {
+    if (widest_loop && piece_lies_in_loop_plane(mesh, pieces.faces_of(piece), holes[i], areas[i])) {
       c.kind = LoopKind::FlatPiece;
       c.reason = piece.lone_triangle()
                      ? "the rim of a lone triangle (face " +
-                           std::to_string(piece.faces[0].idx() + 1) +
+                           std::to_string(pieces.faces[piece.first].idx() + 1) +
                            "): a patch would only cover it with a copy of itself"
-                     : "the rim of a flat piece of " + std::to_string(piece.faces.size()) +
+                     : "the rim of a flat piece of " + std::to_string(piece.face_count) +
                            " faces: a patch would lie on the piece itself";
     } else if (widest_loop && c.spanned_share >= border_share) {
       c.kind = LoopKind::Border;
@@ -116,7 +116,7 @@ std::vector<LoopClass> classify_loops(const Mesh& mesh, const std::vector<Hole>&
                  percent(c.spanned_share) + " of the piece's area (borders from " +
                  percent(border_share) + ")";
     } else if (widest_loop && border_share <= 1.0 &&
-               piece_is_height_field_over(mesh, piece, areas[i])) {
+               piece_is_height_field_over(mesh, pieces, piece, areas[i])) {
       c.kind = LoopKind::Border;
       c.reason =
           "the widest loop of its piece, which lies over it like a height field (a patch "

@@ -1,7 +1,6 @@
 #include "holefill/components.h"
 
 #include <algorithm>
-#include <array>
 
 #include "deletion_flags.h"
 
@@ -9,29 +8,33 @@ namespace holefill {
 
 namespace {
 
-// Each face's neighbours across its edges (as ff_range lists them: from the face's halfedge on,
-// -1 across a boundary) and its area (calc_face_area's), read in face order: the loads of one face
-// do not wait on another's, where following the pieces face by face through OpenMesh's arrays
-// waited on each (mesh_pieces was 14 % of filling a 1.4M-face mesh).
-struct FaceLinks {
-  std::vector<std::array<int, 3>> neighbours;
-  std::vector<double> area;
-};
-
-FaceLinks face_links(const Mesh& mesh) {
-  FaceLinks links;
-  links.neighbours.assign(mesh.n_faces(), {-1, -1, -1});
-  links.area.assign(mesh.n_faces(), 0.0);
-  for (const auto f : mesh.faces()) {
-    const HalfedgeHandle first = mesh.halfedge_handle(f);
-    HalfedgeHandle h = first;
-    for (int side = 0; side < 3; ++side) {
-      links.neighbours[f.idx()][side] = mesh.face_handle(mesh.opposite_halfedge_handle(h)).idx();
-      h = mesh.next_halfedge_handle(h);
-    }
-    links.area[f.idx()] = mesh.calc_face_area(f);
+// The pieces' ids, numbered by their lowest face, written into `piece_of_face` (which must hold
+// -1 for each deleted face and be of the faces' count): a union-find over the edges in their
+// order, each set named by its lowest face (every face's parent is at most the face itself), so
+// one pass in face order turns parents into ids. Returns the number of pieces. Reads OpenMesh's
+// arrays in order with 4 bytes a face beside them, where walking the pieces face by face through
+// them waits on a cache miss at each step.
+int number_pieces(const Mesh& mesh, std::vector<int>& piece_of_face) {
+  std::vector<int>& parent = piece_of_face;
+  for (const auto f : mesh.faces()) parent[f.idx()] = f.idx();
+  auto root = [&parent](int f) {
+    while (parent[f] != f) f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  for (const auto e : mesh.edges()) {
+    const int a = mesh.face_handle(mesh.halfedge_handle(e, 0)).idx();
+    const int b = mesh.face_handle(mesh.halfedge_handle(e, 1)).idx();
+    if (a < 0 || b < 0 || parent[a] < 0 || parent[b] < 0) continue;
+    const int ra = root(a), rb = root(b);
+    parent[std::max(ra, rb)] = std::min(ra, rb);
   }
-  return links;
+  int pieces = 0;
+  for (int f = 0; f < static_cast<int>(parent.size()); ++f) {
+    if (parent[f] < 0) continue;
+    // parent[f] < f was turned into its piece's id already.
+    parent[f] = parent[f] == f ? pieces++ : parent[parent[f]];
+  }
+  return pieces;
 }
 
 }  // namespace
@@ -39,40 +42,35 @@ FaceLinks face_links(const Mesh& mesh) {
 MeshPieces mesh_pieces(const Mesh& mesh) {
   MeshPieces result;
   result.piece_of_face.assign(mesh.n_faces(), -1);
-  const FaceLinks links = face_links(mesh);
-  std::vector<int> stack;
-  for (const auto start : mesh.faces()) {
-    if (result.piece_of_face[start.idx()] >= 0) continue;
-    const int id = static_cast<int>(result.pieces.size());
-    MeshPiece piece;
-    result.piece_of_face[start.idx()] = id;
-    stack.push_back(start.idx());
-    while (!stack.empty()) {
-      const int f = stack.back();
-      stack.pop_back();
-      piece.faces.emplace_back(f);
-      piece.area += links.area[f];
-      for (const int neighbour : links.neighbours[f]) {
-        if (neighbour >= 0 && result.piece_of_face[neighbour] < 0) {
-          result.piece_of_face[neighbour] = id;
-          stack.push_back(neighbour);
-        }
-      }
-    }
-    result.pieces.push_back(std::move(piece));
+  result.pieces.resize(static_cast<std::size_t>(number_pieces(mesh, result.piece_of_face)));
+  for (const auto f : mesh.faces()) {
+    MeshPiece& piece = result.pieces[static_cast<std::size_t>(result.piece_of_face[f.idx()])];
+    ++piece.face_count;
+    piece.area += mesh.calc_face_area(f);
+  }
+  std::size_t first = 0;
+  for (auto& piece : result.pieces) {
+    piece.first = first;
+    first += piece.face_count;
+  }
+  result.faces.resize(first);
+  std::vector<std::size_t> next(result.pieces.size());
+  for (std::size_t p = 0; p < next.size(); ++p) next[p] = result.pieces[p].first;
+  for (const auto f : mesh.faces()) {
+    result.faces[next[static_cast<std::size_t>(result.piece_of_face[f.idx()])]++] = f;
   }
   if (result.pieces.empty()) return result;
   const auto largest = std::max_element(
       result.pieces.begin(), result.pieces.end(),
-      [](const MeshPiece& a, const MeshPiece& b) { return a.faces.size() < b.faces.size(); });
+      [](const MeshPiece& a, const MeshPiece& b) { return a.face_count < b.face_count; });
   largest->largest = true;
   const double small_limit = kSmallPieceShare * static_cast<double>(mesh.n_faces());
   for (auto& piece : result.pieces) {
     piece.small = !piece.largest &&
-                  (piece.lone_triangle() || static_cast<double>(piece.faces.size()) <= small_limit);
+                  (piece.lone_triangle() || static_cast<double>(piece.face_count) <= small_limit);
     if (!piece.small) continue;
     ++(piece.lone_triangle() ? result.lone_triangles : result.small_pieces);
-    result.largest_small_piece = std::max(result.largest_small_piece, piece.faces.size());
+    result.largest_small_piece = std::max(result.largest_small_piece, piece.face_count);
   }
   return result;
 }
@@ -83,10 +81,10 @@ RemovedPieces remove_small_pieces(Mesh& mesh, std::size_t max_faces) {
   const DeletionFlags flags(mesh);
   std::vector<VertexHandle> corners;
   for (const auto& piece : found.pieces) {
-    if (piece.largest || piece.faces.size() > max_faces) continue;
+    if (piece.largest || piece.face_count > max_faces) continue;
     ++removed.pieces;
-    removed.faces += piece.faces.size();
-    for (const auto f : piece.faces) {
+    removed.faces += piece.face_count;
+    for (const auto f : found.faces_of(piece)) {
       for (const auto v : mesh.fv_range(f)) corners.push_back(v);
       mesh.delete_face(f, false);
     }

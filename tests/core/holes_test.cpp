@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <random>
@@ -17,6 +18,7 @@
 namespace holefill {
 namespace {
 
+using testing::make_grid;
 using testing::make_icosphere;
 using testing::without_faces;
 
@@ -147,10 +149,54 @@ TEST(Pieces, RemovingThemLeavesNoElementMarkedAndTheFlagsAsTheyWere) {
   EXPECT_TRUE(flagged.has_face_status());
 }
 
-// mesh_pieces against a union-find over the edges: the same pieces (numbered by their lowest
-// face), each with its faces and its area, on a mesh of many pieces, some touching only at a
-// vertex (which does not join them), with a deleted face.
-TEST(Pieces, AreTheFacesJoinedThroughEdgesAsAUnionFindFindsThem) {
+// The pieces found by flooding from each face not yet reached through its neighbours (ff_range),
+// ordered by their lowest face.
+std::vector<std::set<int>> flooded_pieces(const Mesh& mesh) {
+  std::vector<std::set<int>> pieces;
+  std::set<int> reached;
+  for (const auto start : mesh.faces()) {
+    if (reached.count(start.idx())) continue;
+    std::set<int> piece{start.idx()};
+    std::vector<FaceHandle> front{start};
+    while (!front.empty()) {
+      const FaceHandle f = front.back();
+      front.pop_back();
+      for (const auto g : mesh.ff_range(f)) {
+        if (piece.insert(g.idx()).second) front.push_back(g);
+      }
+    }
+    reached.insert(piece.begin(), piece.end());
+    pieces.push_back(piece);
+  }
+  return pieces;
+}
+
+// mesh_pieces against the flood fill: the same pieces in the same order, each face listed once
+// in its piece, in face order, the area summed in that order.
+void expect_flooded_pieces(const Mesh& mesh) {
+  const std::vector<std::set<int>> expected = flooded_pieces(mesh);
+  const MeshPieces found = mesh_pieces(mesh);
+  ASSERT_EQ(found.pieces.size(), expected.size());
+  std::size_t listed = 0;
+  for (std::size_t p = 0; p < expected.size(); ++p) {
+    const auto faces = found.faces_of(found.pieces[p]);
+    std::vector<int> ids;
+    double area = 0.0;
+    for (const auto f : faces) {
+      ids.push_back(f.idx());
+      EXPECT_EQ(found.piece_of_face[f.idx()], static_cast<int>(p));
+    }
+    for (const int f : expected[p]) area += mesh.calc_face_area(FaceHandle(f));
+    EXPECT_EQ(ids, std::vector<int>(expected[p].begin(), expected[p].end())) << "piece " << p;
+    EXPECT_EQ(found.pieces[p].area, area) << "piece " << p;
+    listed += faces.size();
+  }
+  EXPECT_EQ(listed, found.faces.size());
+}
+
+// On a mesh of many pieces, some touching only at a vertex (which does not join them), with a
+// deleted face.
+TEST(Pieces, AreTheFacesJoinedThroughEdgesAsAFloodFillFindsThem) {
   Mesh mesh = sphere_with_random_holes(11);
   for (int copy = 0; copy < 3; ++copy) {  // three lone triangles, two touching at a vertex
     const auto a = mesh.add_vertex({3.0 + copy, 0.0, 0.0});
@@ -163,42 +209,37 @@ TEST(Pieces, AreTheFacesJoinedThroughEdgesAsAUnionFindFindsThem) {
   mesh.request_edge_status();
   mesh.request_halfedge_status();
   mesh.delete_face(FaceHandle(7), false);
-  std::vector<int> parent(mesh.n_faces());
-  for (std::size_t f = 0; f < parent.size(); ++f) parent[f] = static_cast<int>(f);
-  auto root = [&parent](int f) {
-    while (parent[f] != f) f = parent[f];
-    return f;
-  };
-  for (const auto e : mesh.edges()) {
-    const FaceHandle f0 = mesh.face_handle(mesh.halfedge_handle(e, 0));
-    const FaceHandle f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
-    if (f0.is_valid() && f1.is_valid()) parent[root(f0.idx())] = root(f1.idx());
-  }
-  std::map<int, std::set<int>> faces_of_root;
-  std::map<int, double> area_of_root;
-  for (const auto f : mesh.faces()) {
-    faces_of_root[root(f.idx())].insert(f.idx());
-    area_of_root[root(f.idx())] += mesh.calc_face_area(f);
-  }
-  std::vector<std::set<int>> expected;  // by lowest face
-  for (const auto& [r, faces] : faces_of_root) expected.push_back(faces);
-  std::sort(expected.begin(), expected.end());
+  expect_flooded_pieces(mesh);
+  EXPECT_GE(flooded_pieces(mesh).size(), 4u);
+  EXPECT_EQ(mesh_pieces(mesh).piece_of_face[7], -1);
+}
 
-  const MeshPieces found = mesh_pieces(mesh);
-  ASSERT_EQ(found.pieces.size(), expected.size());
-  ASSERT_GE(expected.size(), 4u);
-  for (std::size_t p = 0; p < expected.size(); ++p) {
-    const MeshPiece& piece = found.pieces[p];
-    std::set<int> faces;
-    for (const auto f : piece.faces) {
-      faces.insert(f.idx());
-      EXPECT_EQ(found.piece_of_face[f.idx()], static_cast<int>(p));
+// Faces of several grids added in a shuffled order, so that each piece's faces are scattered
+// and its lowest face is joined to the others late.
+TEST(Pieces, OfScatteredFacesAreNumberedByTheirLowestFace) {
+  std::vector<Mesh> grids;
+  for (int g = 0; g < 4; ++g)
+    grids.push_back(make_grid(6 + 3 * g, [](double, double) { return 0.0; }));
+  Mesh mesh;
+  std::vector<std::array<VertexHandle, 3>> faces;
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    const int offset = static_cast<int>(mesh.n_vertices());
+    for (const auto v : grids[g].vertices())
+      mesh.add_vertex(grids[g].point(v) + Point(10.0 * static_cast<double>(g), 0.0, 0.0));
+    for (const auto f : grids[g].faces()) {
+      std::array<VertexHandle, 3> corners;
+      int c = 0;
+      for (const auto v : grids[g].fv_range(f)) corners[c++] = VertexHandle(v.idx() + offset);
+      faces.push_back(corners);
     }
-    EXPECT_EQ(faces, expected[p]) << "piece " << p;
-    EXPECT_EQ(piece.faces.size(), expected[p].size());  // each face once
-    EXPECT_NEAR(piece.area, area_of_root[root(*expected[p].begin())], 1e-12);
   }
-  EXPECT_EQ(found.piece_of_face[7], -1);
+  std::mt19937 rng(5);
+  std::shuffle(faces.begin(), faces.end(), rng);
+  for (const auto& corners : faces) {
+    ASSERT_TRUE(mesh.add_face(corners[0], corners[1], corners[2]).is_valid());
+  }
+  expect_flooded_pieces(mesh);
+  EXPECT_EQ(mesh_pieces(mesh).pieces.size(), 4u);
 }
 
 }  // namespace
