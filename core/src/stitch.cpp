@@ -76,7 +76,7 @@ FlatLists points_within(const detail::BoundaryIndex& index, double tolerance) {
 struct Matches {
   std::vector<std::pair<HalfedgeHandle, HalfedgeHandle>> pairs;
   std::size_t halfedges_on_another = 0;  // boundary halfedges lying on at least one other
-  std::vector<char> on_another;          // per halfedge: whether it lies on another
+  std::vector<int> on_another;           // those halfedges, in increasing order
 };
 
 // A vertex with more boundary halfedges leaving it than this (a pinch of many fans) has its
@@ -96,11 +96,14 @@ Matches matching_boundary_edges(const Mesh& mesh, const detail::BoundaryIndex& i
   auto ends_key = [](int from_slot, int to_slot) {
     return (static_cast<std::uint64_t>(from_slot) << 32) | static_cast<std::uint32_t>(to_slot);
   };
-  // The boundary halfedges leaving each point, and all of them sorted by their ends.
+  // The boundary halfedges in increasing order, those leaving each point, and all of them sorted
+  // by their ends: the arrays below are per boundary halfedge, not per halfedge of the mesh.
+  std::vector<int> boundary;
   std::vector<std::pair<int, int>> leaving;
   std::vector<std::pair<std::uint64_t, int>> by_ends;
   for (const auto h : mesh.halfedges()) {
     if (!mesh.is_boundary(h)) continue;
+    boundary.push_back(h.idx());
     const int from = slot[mesh.from_vertex_handle(h).idx()],
               to = slot[mesh.to_vertex_handle(h).idx()];
     leaving.emplace_back(from, h.idx());
@@ -110,14 +113,14 @@ Matches matching_boundary_edges(const Mesh& mesh, const detail::BoundaryIndex& i
   std::sort(by_ends.begin(), by_ends.end());
   const FlatLists near = points_within(index, tolerance);
 
-  std::vector<int> match_of(mesh.n_halfedges(), -1);
+  std::vector<int> match_of(boundary.size(), -1);  // per boundary halfedge
   std::vector<char> near_p(points.vertices.size(), 0);
-  for (const auto h : mesh.halfedges()) {
-    if (!mesh.is_boundary(h)) continue;
+  for (std::size_t b = 0; b < boundary.size(); ++b) {
+    const HalfedgeHandle h(boundary[b]);
     const int p = slot[mesh.from_vertex_handle(h).idx()], q = slot[mesh.to_vertex_handle(h).idx()];
     int count = 0;
     auto found = [&](int other) {
-      if (other != h.idx()) match_of[h.idx()] = count++ ? -2 : other;
+      if (other != h.idx()) match_of[b] = count++ ? -2 : other;
     };
     for (const int p2 : near[p]) near_p[p2] = 1;
     for (const int q2 : near[q]) {
@@ -137,12 +140,13 @@ Matches matching_boundary_edges(const Mesh& mesh, const detail::BoundaryIndex& i
     for (const int p2 : near[p]) near_p[p2] = 0;
     if (count > 0) ++matches.halfedges_on_another;
   }
-  matches.on_another.resize(mesh.n_halfedges());
-  for (std::size_t h = 0; h < match_of.size(); ++h) matches.on_another[h] = match_of[h] != -1;
-  for (const auto h : mesh.halfedges()) {
-    const int other = match_of[h.idx()];
-    if (other > h.idx() && match_of[other] == h.idx()) {
-      matches.pairs.emplace_back(h, HalfedgeHandle(other));
+  for (std::size_t b = 0; b < boundary.size(); ++b) {
+    if (match_of[b] != -1) matches.on_another.push_back(boundary[b]);
+    const int h = boundary[b], other = match_of[b];
+    if (other <= h) continue;
+    const auto at = std::lower_bound(boundary.begin(), boundary.end(), other);
+    if (match_of[static_cast<std::size_t>(at - boundary.begin())] == h) {
+      matches.pairs.emplace_back(HalfedgeHandle(h), HalfedgeHandle(other));
     }
   }
   return matches;
@@ -248,7 +252,7 @@ StitchReport stitch_matching_edges(Mesh& mesh, const Matches& matches, double to
   // Join the ends of every pair; a group whose merge would not be clean gives up its pairs, and
   // the groups are formed again, until every group is clean.
   std::vector<int> kept_of;
-  for (bool changed = true; changed;) {
+  for (bool changed = !pairs.empty(); changed;) {  // no pairs: no per-vertex arrays either
     changed = false;
     VertexGroups groups(mesh.n_vertices());
     for (const auto& [a, b] : pairs) {

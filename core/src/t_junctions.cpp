@@ -102,7 +102,7 @@ void set_split_corners(Mesh& mesh, const ObjHandles& obj, VertexHandle a, Vertex
 }  // namespace
 
 std::vector<TJunction> find_t_junctions(const Mesh& mesh, const BoundaryIndex& index,
-                                        double tolerance, const std::vector<char>& has_partner) {
+                                        double tolerance, const std::vector<int>& with_partner) {
   const BoundaryPoints& points = index.points;
   const BoundaryPointTree& tree = index.tree;
   std::vector<TJunction> junctions;
@@ -114,7 +114,9 @@ std::vector<TJunction> find_t_junctions(const Mesh& mesh, const BoundaryIndex& i
     const Point &a = mesh.point(from), &b = mesh.point(to);
     const double length = (b - a).norm();
     if (!(length > 2.0 * tolerance) || !(length < INFINITY)) continue;
-    if (has_partner[h.idx()]) continue;  // most seams' edges
+    if (std::binary_search(with_partner.begin(), with_partner.end(), h.idx())) {
+      continue;  // most seams' edges
+    }
     points_near(tree, (a + b) * 0.5, 0.5 * length + tolerance, found);
     const std::size_t first = junctions.size();
     for (const auto& [index, squared] : found) {
