@@ -1,74 +1,82 @@
 #include "mesh_from_triangles.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 
 namespace holefill::io {
-namespace {
-
-// Sorts one vertex's uses, already in triangle order: by insertion where a vertex has a few
-// edges (stable, so ties stay in triangle order), else by the full order.
-void sort_run(std::vector<EdgeUse>::iterator begin, std::vector<EdgeUse>::iterator end) {
-  constexpr std::ptrdiff_t kInsertionLimit = 32;
-  if (end - begin > kInsertionLimit) {
-    std::sort(begin, end);
-    return;
-  }
-  for (auto i = begin + (begin != end ? 1 : 0); i < end; ++i) {
-    const EdgeUse u = *i;
-    auto j = i;
-    for (; j > begin && u.edge() < (j - 1)->edge(); --j) *j = *(j - 1);
-    *j = u;
-  }
-}
-
-}  // namespace
-
 // A counting sort by the smaller vertex (stable: triangles in order), then each vertex's uses by
 // the larger vertex: the order of sorting by (edge, triangle), in time linear in the triangles
 // where a comparison sort of all uses was the largest cost of loading a big mesh.
-std::vector<EdgeUse> edge_uses(const std::vector<Triangle>& triangles) {
-  auto use = [&triangles](int t, int c) -> EdgeUse {
+EdgeUses::EdgeUses(const std::vector<Triangle>& triangles) {
+  auto ends = [&triangles](std::size_t t, int c) {
     const auto a = static_cast<std::uint32_t>(triangles[t][c]);
     const auto b = static_cast<std::uint32_t>(triangles[t][(c + 1) % 3]);
-    return {static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b), t, a < b};
+    return std::pair{a, b};
   };
   std::uint32_t vertices = 0;
   for (const auto& triangle : triangles) {
     for (const int v : triangle) vertices = std::max(vertices, static_cast<std::uint32_t>(v) + 1);
   }
-  std::vector<std::size_t> run_end(vertices + 1, 0);  // after the loop below: each run's start
-  const int count = static_cast<int>(triangles.size());
-  for (int t = 0; t < count; ++t) {
-    for (int c = 0; c < 3; ++c) ++run_end[use(t, c).smaller() + 1];
-  }
-  for (std::uint32_t v = 0; v < vertices; ++v) run_end[v + 1] += run_end[v];
-  std::vector<EdgeUse> uses(3 * triangles.size());
-  for (int t = 0; t < count; ++t) {
+  // Counted at v + 2 and summed, start_[v + 1] is where v's run starts; filling it moves it to
+  // where the run ends, which is where v + 1's starts.
+  start_.assign(std::size_t{vertices} + 2, 0);
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (int c = 0; c < 3; ++c) {
-      const EdgeUse u = use(t, c);
-      uses[run_end[u.smaller()]++] = u;
+      const auto [a, b] = ends(t, c);
+      ++start_[std::min(a, b) + std::size_t{2}];
     }
   }
-  std::size_t begin = 0;
-  for (std::uint32_t v = 0; v < vertices; ++v) {
-    sort_run(uses.begin() + static_cast<std::ptrdiff_t>(begin),
-             uses.begin() + static_cast<std::ptrdiff_t>(run_end[v]));
-    begin = run_end[v];
+  for (std::size_t v = 0; v + 1 < start_.size(); ++v) start_[v + 1] += start_[v];
+  size_ = 3 * triangles.size();
+  for (std::size_t first = 0; first < size_; first += std::size_t{1} << kBlockBits) {
+    blocks_.push_back(
+        std::make_unique_for_overwrite<EdgeUse[]>(std::min(size_ - first, kBlockMask + 1)));
   }
-  return uses;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (int c = 0; c < 3; ++c) {
+      const auto [a, b] = ends(t, c);
+      (*this)[start_[std::min(a, b) + std::size_t{1}]++] =
+          EdgeUse(static_cast<int>(std::max(a, b)), static_cast<int>(t), a < b);
+    }
+  }
+  start_.pop_back();
+  sort_runs_by_larger();
+}
+
+// Sorts each vertex's uses, already in triangle order, by the larger vertex: by insertion where a
+// vertex has a few edges (stable, so ties stay in triangle order), else by the full order.
+void EdgeUses::sort_runs_by_larger() {
+  constexpr std::size_t kInsertionLimit = 32;
+  auto before = [](const EdgeUse& a, const EdgeUse& b) {
+    return a.larger() != b.larger() ? a.larger() < b.larger() : a.triangle() < b.triangle();
+  };
+  std::vector<EdgeUse> long_run;
+  for (std::size_t v = 0; v < vertex_bound(); ++v) {
+    const std::size_t begin = start_[v], end = start_[v + 1];
+    if (end - begin > kInsertionLimit) {
+      long_run.clear();
+      for (std::size_t i = begin; i < end; ++i) long_run.push_back((*this)[i]);
+      std::sort(long_run.begin(), long_run.end(), before);
+      for (std::size_t i = begin; i < end; ++i) (*this)[i] = long_run[i - begin];
+      continue;
+    }
+    for (std::size_t i = begin + 1; i < end; ++i) {
+      const EdgeUse u = (*this)[i];
+      std::size_t j = i;
+      for (; j > begin && u.larger() < (*this)[j - 1].larger(); --j) (*this)[j] = (*this)[j - 1];
+      (*this)[j] = u;
+    }
+  }
+}
+
+void EdgeUses::release_before(std::size_t first) {
+  for (std::size_t b = 0; b < blocks_.size() && (b + 1) << kBlockBits <= first; ++b) {
+    blocks_[b].reset();
+  }
 }
 
 namespace {
-
-// The corner of triangle `t` whose edge to the next corner is {a, b}.
-int corner_of_edge(const Triangle& t, int a, int b) {
-  for (int c = 0; c < 3; ++c) {
-    const int from = t[c], to = t[(c + 1) % 3];
-    if ((from == a && to == b) || (from == b && to == a)) return c;
-  }
-  return -1;
-}
 
 // At vertex x, the boundary halfedge leaving x on the same fan as the boundary halfedge
 // `incoming` that arrives at x: turns around x through the fan's faces.
@@ -107,61 +115,81 @@ void link_boundaries(Mesh& mesh) {
   }
 }
 
-// The halfedges of the triangles' edges, numbered as OpenMesh numbers them when the edges are
-// made in the order of their uses: edge e is made from its first use, whose halfedge is 2 e; the
-// other triangle on the edge gets 2 e + 1. Computed before the mesh exists, so that the uses (12
-// bytes each, three per triangle) are freed before the mesh's arrays are made.
-struct HalfedgeNumbers {
-  std::vector<int> of_corner;  // per corner 3 t + c: the halfedge from corner c to c + 1
+// The number of edges the uses describe.
+std::size_t count_edges(const EdgeUses& uses) {
   std::size_t edges = 0;
-};
-
-HalfedgeNumbers halfedge_numbers(const std::vector<Triangle>& triangles,
-                                 std::vector<EdgeUse> known_uses) {
-  const std::vector<EdgeUse> uses =
-      known_uses.empty() ? edge_uses(triangles) : std::move(known_uses);
-  HalfedgeNumbers numbers;
-  numbers.of_corner.resize(3 * triangles.size());
-  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
-    const int a = uses[i].smaller(), b = uses[i].larger();
-    const int halfedge = 2 * static_cast<int>(numbers.edges++);
-    for (std::size_t k = i; k < j; ++k) {
-      const int t = uses[k].triangle();
-      numbers.of_corner[3 * t + corner_of_edge(triangles[t], a, b)] = halfedge + (k == i ? 0 : 1);
-    }
-  });
-  return numbers;
+  uses.for_each_edge([&edges](int, std::size_t, std::size_t) { ++edges; });
+  return edges;
 }
 
-// Gives the mesh, whose vertices are made, the triangles' faces by building their half-edges
-// directly: linear in the triangles, where add_face circulates around each corner (quadratic
-// around a vertex with many fans). The edges and faces are made at once (as many new_edge and
-// new_face calls would make them, each growing every property by one).
-// Preconditions (what the repairs guarantee): every edge is used at most twice, in opposite
-// directions, and a vertex has either one closed fan or only open ones.
-void add_triangles(Mesh& mesh, const std::vector<Triangle>& triangles,
-                   const HalfedgeNumbers& numbers) {
-  mesh.resize(mesh.n_vertices(), numbers.edges, triangles.size());
-  auto halfedge = [&numbers](std::size_t corner) {
-    return HalfedgeHandle(numbers.of_corner[corner]);
-  };
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    const FaceHandle f(static_cast<int>(t));
-    // As add_face does: the face circulators start at corner 0.
-    mesh.set_halfedge_handle(f, halfedge(3 * t + 2));
-    for (int c = 0; c < 3; ++c) {
-      const HalfedgeHandle h = halfedge(3 * t + c);
-      mesh.set_vertex_handle(h, VertexHandle(triangles[t][(c + 1) % 3]));
-      // The edge's first use (2 e) also gives its other halfedge, which may have no face.
-      if (h.idx() % 2 == 0) {
-        mesh.set_vertex_handle(HalfedgeHandle(h.idx() + 1), VertexHandle(triangles[t][c]));
-      }
+// The edges the mesh's arrays grow by at a time while the uses they come from are handed back.
+constexpr std::size_t kEdgesAtATime = std::size_t{1} << 16;
+
+// Gives the mesh, whose vertices and faces are made, the edges of the uses, numbered in their
+// order as OpenMesh numbers edges made in that order: edge e's first use (its lowest triangle)
+// has halfedge 2 e, the other triangle on it 2 e + 1. Each halfedge gets its vertex and face, and
+// a face's halfedges are chained through `next` from the face's halfedge (link_faces orders
+// them). The mesh's edges grow as the uses are read, and the blocks of uses read are freed, so
+// the two are never whole side by side.
+void add_edges(Mesh& mesh, EdgeUses uses, std::size_t edges) {
+  std::size_t e = 0;
+  uses.for_each_edge([&](int smaller, std::size_t first, std::size_t last) {
+    if (e == mesh.n_edges()) {
+      uses.release_before(first);
+      mesh.resize(mesh.n_vertices(), std::min(edges, e + kEdgesAtATime), mesh.n_faces());
+    }
+    const int larger = uses[first].larger();
+    for (std::size_t k = first; k < last; ++k) {
+      const EdgeUse& use = uses[k];
+      const HalfedgeHandle h(static_cast<int>(2 * e + (k - first)));
+      const VertexHandle from(use.forward() ? smaller : larger),
+          to(use.forward() ? larger : smaller);
+      mesh.set_vertex_handle(h, to);
+      // The edge's first use also gives its other halfedge, which may have no face.
+      if (k == first) mesh.set_vertex_handle(mesh.opposite_halfedge_handle(h), from);
+      const FaceHandle f(use.triangle());
       mesh.set_face_handle(h, f);
-      mesh.set_next_halfedge_handle(h, halfedge(3 * t + (c + 1) % 3));
-      mesh.set_halfedge_handle(mesh.from_vertex_handle(h), h);
+      if (mesh.halfedge_handle(f).is_valid()) {
+        mesh.set_next_halfedge_handle(h, mesh.halfedge_handle(f));
+      }
+      mesh.set_halfedge_handle(f, h);
+    }
+    ++e;
+  });
+}
+
+// Which of a triangle's vertices, by index, is its first corner: 0 the smallest, 1 the middle, 2
+// the largest (a byte a face, where the corners themselves took twelve beside the mesh).
+std::uint8_t rank_of_first_corner(const Triangle& t) {
+  return static_cast<std::uint8_t>((t[1] < t[0] ? 1 : 0) + (t[2] < t[0] ? 1 : 0));
+}
+
+// Links each face's three halfedges, chained by add_edges, in its triangle's order: corner c's
+// halfedge runs from corner c to c + 1, corner 0 being the vertex of rank `first_corner_rank` of
+// the face, and the face's halfedge arrives at corner 0 (as add_face makes it: the face
+// circulators start there). Each vertex gets the halfedge leaving it in the last triangle that
+// uses it, as adding the faces in order would give it.
+void link_faces(Mesh& mesh, const std::vector<std::uint8_t>& first_corner_rank) {
+  for (std::size_t t = 0; t < first_corner_rank.size(); ++t) {
+    const FaceHandle f(static_cast<int>(t));
+    std::array<HalfedgeHandle, 3> h;
+    h[0] = mesh.halfedge_handle(f);
+    h[1] = mesh.next_halfedge_handle(h[0]);
+    h[2] = mesh.next_halfedge_handle(h[1]);
+    std::array<int, 3> from;
+    for (int c = 0; c < 3; ++c) from[c] = mesh.from_vertex_handle(h[c]).idx();
+    std::array<int, 3> by_index = from;
+    std::sort(by_index.begin(), by_index.end());
+    const int first = by_index[first_corner_rank[t]];
+    const auto at = std::find(from.begin(), from.end(), first) - from.begin();
+    std::rotate(h.begin(), h.begin() + at, h.end());
+    if (mesh.from_vertex_handle(h[1]) != mesh.to_vertex_handle(h[0])) std::swap(h[1], h[2]);
+    mesh.set_halfedge_handle(f, h[2]);
+    for (int c = 0; c < 3; ++c) {
+      mesh.set_next_halfedge_handle(h[c], h[(c + 1) % 3]);
+      mesh.set_halfedge_handle(mesh.from_vertex_handle(h[c]), h[c]);
     }
   }
-  link_boundaries(mesh);
 }
 
 // Room for this many elements when there are `count`: an eighth more (see assemble).
@@ -220,28 +248,35 @@ std::size_t mesh_capacity(std::size_t count) { return with_room(count); }
 
 // Faces that could not join the surface (an edge with a third face, a face turned against its
 // neighbours) are kept, on their own copies of their corners, so no data is lost.
-Mesh assemble(std::vector<Point> positions, const std::vector<Triangle>& triangles,
+Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
               const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
-              MeshSources* sources, std::vector<EdgeUse> uses) {
+              MeshSources* sources, EdgeUses uses) {
   if (sources) {
     sources->vertex = identity(positions.size());
     sources->face.clear();
   }
-  std::vector<Triangle> rearranged;  // only when some triangles are detached
   report.faces_detached = 0;
   if (std::find(detached.begin(), detached.end(), 1) != detached.end()) {
-    rearranged = detach(triangles, detached, positions, sources, report.faces_detached);
+    triangles = detach(triangles, detached, positions, sources, report.faces_detached);
     // Detached triangles move to the end, on new vertices: the uses of the input are not theirs.
-    uses = std::vector<EdgeUse>();
+    uses = EdgeUses();
   } else if (sources) {
     sources->face = identity(triangles.size());
   }
-  const std::vector<Triangle>& kept = report.faces_detached ? rearranged : triangles;
-  const HalfedgeNumbers numbers = halfedge_numbers(kept, std::move(uses));
+  if (uses.empty()) uses = EdgeUses(triangles);
+  std::vector<std::uint8_t> first_corner_rank(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    first_corner_rank[t] = rank_of_first_corner(triangles[t]);
+  }
+  std::vector<Triangle>().swap(triangles);  // the uses and the ranks say the rest
+  const std::size_t edges = count_edges(uses);
   Mesh mesh;
-  mesh.reserve(with_room(positions.size()), with_room(numbers.edges), with_room(kept.size()));
+  mesh.reserve(with_room(positions.size()), with_room(edges), with_room(first_corner_rank.size()));
   add_vertices(mesh, positions);
-  add_triangles(mesh, kept, numbers);
+  mesh.resize(mesh.n_vertices(), 0, first_corner_rank.size());
+  add_edges(mesh, std::move(uses), edges);
+  link_faces(mesh, first_corner_rank);
+  link_boundaries(mesh);
   for (std::size_t v = 0; v < original_vertices; ++v) {
     if (mesh.is_isolated(VertexHandle(static_cast<int>(v)))) ++report.isolated_vertices;
   }

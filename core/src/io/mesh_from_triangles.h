@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "holefill/io.h"
@@ -12,49 +13,75 @@ namespace holefill::io {
 
 using Triangle = std::array<int, 3>;
 
-// One triangle's use of an undirected edge, in 12 bytes (three per triangle: the largest array
-// while the repairs run, 16 bytes a use before).
+// One triangle's use of an undirected edge, kept in the run of the edge's smaller vertex
+// (EdgeUses): the larger vertex, the triangle and its direction, in 8 bytes (three per triangle:
+// the largest array while the repairs run; 16 bytes, then 12, before).
 class EdgeUse {
  public:
-  EdgeUse() = default;
-  // `edge`: the smaller vertex index in the high half, the larger in the low; `forward`: the
-  // triangle runs from the smaller to the larger (triangle indices are below 2^31).
-  EdgeUse(std::uint64_t edge, int triangle, bool forward)
-      : smaller_(static_cast<std::uint32_t>(edge >> 32)),
-        larger_(static_cast<std::uint32_t>(edge)),
+  EdgeUse() = default;  // uninitialised, so that a block of uses costs nothing until written
+  // `forward`: the triangle runs from the smaller vertex to the larger (triangle indices are
+  // below 2^31).
+  EdgeUse(int larger, int triangle, bool forward)
+      : larger_(static_cast<std::uint32_t>(larger)),
         triangle_(static_cast<std::uint32_t>(triangle) | (forward ? kForward : 0)) {}
 
-  std::uint64_t edge() const { return std::uint64_t{smaller_} << 32 | larger_; }
-  int smaller() const { return static_cast<int>(smaller_); }
   int larger() const { return static_cast<int>(larger_); }
   int triangle() const { return static_cast<int>(triangle_ & ~kForward); }
   bool forward() const { return (triangle_ & kForward) != 0; }
   // The triangle was flipped: it runs along the edge the other way.
   void reverse() { triangle_ ^= kForward; }
-  bool operator<(const EdgeUse& other) const {
-    return edge() != other.edge() ? edge() < other.edge() : triangle() < other.triangle();
-  }
 
  private:
   static constexpr std::uint32_t kForward = 0x80000000u;
-  std::uint32_t smaller_ = 0, larger_ = 0;
-  std::uint32_t triangle_ = 0;  // the triangle's index, kForward when it runs forward
+  std::uint32_t larger_;
+  std::uint32_t triangle_;  // the triangle's index, kForward when it runs forward
 };
-static_assert(sizeof(EdgeUse) == 12);
+static_assert(sizeof(EdgeUse) == 8);
 
-// Every use of an edge by a triangle, sorted by edge (then triangle).
-std::vector<EdgeUse> edge_uses(const std::vector<Triangle>& triangles);
+// Every use of an edge by a triangle, sorted by edge (smaller vertex, then larger), then by
+// triangle; the uses of the edges whose smaller vertex is v are [start(v), start(v + 1)). They are
+// kept in blocks of a megabyte so that the mesh's arrays can grow while the uses they were made
+// from are handed back (release_before).
+class EdgeUses {
+ public:
+  EdgeUses() = default;
+  explicit EdgeUses(const std::vector<Triangle>& triangles);
 
-// Calls visit(first, last) for each run of uses of one edge.
-template <class Visit>
-void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].edge() == uses[i].edge()) ++j;
-    visit(i, j);
-    i = j;
+  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return size_; }
+  EdgeUse& operator[](std::size_t i) { return blocks_[i >> kBlockBits][i & kBlockMask]; }
+  const EdgeUse& operator[](std::size_t i) const {
+    return blocks_[i >> kBlockBits][i & kBlockMask];
   }
-}
+  // The vertices that may have uses: 0 .. vertex_bound() - 1.
+  std::size_t vertex_bound() const { return start_.empty() ? 0 : start_.size() - 1; }
+  std::size_t start(std::size_t vertex) const { return start_[vertex]; }
+
+  // Calls visit(smaller, first, last) for the uses [first, last) of each edge, in edge order.
+  template <class Visit>
+  void for_each_edge(Visit&& visit) const {
+    for (std::size_t v = 0; v < vertex_bound(); ++v) {
+      for (std::size_t i = start_[v]; i < start_[v + 1];) {
+        std::size_t j = i + 1;
+        while (j < start_[v + 1] && (*this)[j].larger() == (*this)[i].larger()) ++j;
+        visit(static_cast<int>(v), i, j);
+        i = j;
+      }
+    }
+  }
+
+  // Frees the blocks that hold only uses before `first`, which must not be read again.
+  void release_before(std::size_t first);
+
+ private:
+  static constexpr int kBlockBits = 17;  // 128 K uses, 1 MB
+  static constexpr std::size_t kBlockMask = (std::size_t{1} << kBlockBits) - 1;
+  void sort_runs_by_larger();
+
+  std::vector<std::size_t> start_;
+  std::vector<std::unique_ptr<EdgeUse[]>> blocks_;
+  std::size_t size_ = 0;
+};
 
 // Where each element of an assembled mesh came from: the index of its input position (vertex)
 // or input triangle (face).
@@ -67,15 +94,19 @@ struct MeshSources {
 // edge used at most twice, in opposite directions, and each vertex with one closed fan or only
 // open ones. Counts report.faces_detached and the first `original_vertices` vertices no face uses
 // (report.isolated_vertices), and says in `sources` (when not null: only attributes need them)
-// where each element came from. `uses` are the triangles' edge_uses when the caller has them
-// (empty: computed here). Linear in the triangles. The positions and uses are taken so that they
-// are freed as soon as the mesh has what it needs of them: the positions become the mesh's points
-// array as they are, without a copy when their capacity is at least mesh_capacity(their count).
-// The mesh has room for an eighth more of each element (what filling adds), so that adding the
-// first patch does not copy every array into one twice its size.
-Mesh assemble(std::vector<Point> positions, const std::vector<Triangle>& triangles,
+// where each element came from. `uses` are the triangles' edge uses when the caller has them
+// (empty: made here). Linear in the triangles. Edges are numbered in the uses' order, an edge's
+// first use (its lowest triangle) taking halfedge 2 e; a face's halfedge arrives at its triangle's
+// first corner; a vertex's halfedge leaves it in the last triangle using it, or on a boundary.
+// The positions, triangles and uses are taken so that they are freed as soon as the mesh has what
+// it needs of them: the positions become the mesh's points array as they are, without a copy when
+// their capacity is at least mesh_capacity(their count); the triangles go before the mesh's edges
+// are made, and the uses a block at a time as the edges are. The mesh has room for an eighth more
+// of each element (what filling adds), so that adding the first patch does not copy every array
+// into one twice its size.
+Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
               const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
-              MeshSources* sources, std::vector<EdgeUse> uses = {});
+              MeshSources* sources, EdgeUses uses = {});
 
 // The capacity assemble gives the mesh's arrays for `count` elements: a reader that knows how
 // many positions it will read reserves this many, so that they become the mesh's without a copy.

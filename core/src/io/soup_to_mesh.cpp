@@ -159,15 +159,15 @@ class NeighbourFlips {
 // Flips triangles so that neighbours across every edge with exactly two triangles use it in
 // opposite directions; per connected piece, the orientation most triangles have wins. Returns
 // the number flipped, and turns `corners` (when not empty) and the triangles' `uses` (their
-// edge_uses) alike. Pieces that cannot be oriented (a Moebius strip) keep a conflict, which
+// EdgeUses) alike. Pieces that cannot be oriented (a Moebius strip) keep a conflict, which
 // detach_non_manifold resolves.
 std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Triangle>& corners,
-                                std::vector<EdgeUse>& uses) {
+                                EdgeUses& uses) {
   const int count = static_cast<int>(triangles.size());
   // Up to three neighbours per triangle, and whether each must take the opposite orientation.
   std::vector<std::array<int, 3>> neighbour(triangles.size(), {-1, -1, -1});
   std::vector<NeighbourFlips> links(triangles.size());
-  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+  uses.for_each_edge([&](int, std::size_t i, std::size_t j) {
     if (j - i != 2 || uses[i].triangle() == uses[i + 1].triangle()) return;
     const int a = uses[i].triangle(), b = uses[i + 1].triangle();
     const bool opposite = uses[i].forward() == uses[i + 1].forward();
@@ -209,8 +209,8 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
   }
   // A flipped triangle runs along each of its edges the other way (the edges stay).
   if (flipped == 0) return 0;
-  for (auto& use : uses) {
-    if (turned[use.triangle()]) use.reverse();
+  for (std::size_t k = 0; k < uses.size(); ++k) {
+    if (turned[uses[k].triangle()]) uses[k].reverse();
   }
   return flipped;
 }
@@ -218,9 +218,9 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
 // Marks the triangles that must be kept apart so that every edge is used at most twice, in
 // opposite directions: on each edge the first triangle and the first one after it running the
 // other way stay; later ones (a third sheet on the edge, a fin) are detached.
-std::vector<char> detach_non_manifold(const std::vector<EdgeUse>& uses, std::size_t triangles) {
+std::vector<char> detach_non_manifold(const EdgeUses& uses, std::size_t triangles) {
   std::vector<char> detached(triangles, 0);
-  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+  uses.for_each_edge([&](int, std::size_t i, std::size_t j) {
     int kept = 0;
     bool first_forward = false;
     for (std::size_t k = i; k < j; ++k) {
@@ -242,7 +242,7 @@ std::vector<char> detach_non_manifold(const std::vector<EdgeUse>& uses, std::siz
 // edges two live triangles share, and which wedges lie on a boundary edge.
 class WedgeFans {
  public:
-  WedgeFans(const std::vector<Triangle>& triangles, const std::vector<EdgeUse>& uses,
+  WedgeFans(const std::vector<Triangle>& triangles, const EdgeUses& uses,
             const std::vector<char>& detached)
       : parent_(3 * triangles.size()), open_(3 * triangles.size(), 0) {
     for (std::size_t w = 0; w < parent_.size(); ++w) parent_[w] = static_cast<int>(w);
@@ -250,12 +250,12 @@ class WedgeFans {
       const auto& c = triangles[t];
       return 3 * t + (c[0] == vertex ? 0 : c[1] == vertex ? 1 : 2);
     };
-    for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+    uses.for_each_edge([&](int smaller, std::size_t i, std::size_t j) {
       int live[2], count = 0;
       for (std::size_t k = i; k < j; ++k) {
         if (!detached[uses[k].triangle()] && count < 2) live[count++] = uses[k].triangle();
       }
-      const int a = uses[i].smaller(), b = uses[i].larger();
+      const int a = smaller, b = uses[i].larger();
       if (count == 1) {
         open_[wedge(live[0], a)] = open_[wedge(live[0], b)] = 1;
       } else if (count == 2) {
@@ -308,8 +308,8 @@ std::vector<std::pair<int, int>> fans_of_shared_vertices(const std::vector<Trian
 // position (appended to `positions`), so both surfaces stay closed. Fans with a boundary may
 // share a vertex: that is a pinched boundary, which OpenMesh stores. Returns the copies made;
 // `origin` (when not empty) gets the vertex each copy was made from. `uses` are the triangles'
-// edge_uses.
-std::size_t split_closed_fans(std::vector<Triangle>& triangles, const std::vector<EdgeUse>& uses,
+// EdgeUses.
+std::size_t split_closed_fans(std::vector<Triangle>& triangles, const EdgeUses& uses,
                               const std::vector<char>& detached, std::vector<Point>& positions,
                               std::vector<int>& origin) {
   WedgeFans wedges(triangles, uses, detached);
@@ -359,17 +359,17 @@ std::size_t count_duplicate_positions(const std::vector<Point>& positions) {
 }
 
 // Orients the triangles, marks those to keep apart and splits the vertices where closed fans
-// touch (counted in `report`); returns the marks. One edge_uses serves all three (flips keep the
+// touch (counted in `report`); returns the marks. One EdgeUses serves all three (flips keep the
 // edges); it is handed on in `uses` when it still describes the triangles (no vertex split),
 // else freed before the mesh is assembled.
 std::vector<char> make_consistent(std::vector<Triangle>& triangles, std::vector<Triangle>& corners,
                                   std::vector<Point>& positions, std::vector<int>& origin,
-                                  LoadReport& report, std::vector<EdgeUse>& uses) {
-  uses = edge_uses(triangles);
+                                  LoadReport& report, EdgeUses& uses) {
+  uses = EdgeUses(triangles);
   report.faces_flipped = orient_consistently(triangles, corners, uses);
   std::vector<char> detached = detach_non_manifold(uses, triangles.size());
   report.vertices_split = split_closed_fans(triangles, uses, detached, positions, origin);
-  if (report.vertices_split) std::vector<EdgeUse>().swap(uses);
+  if (report.vertices_split) uses = EdgeUses();
   return detached;
 }
 
@@ -405,24 +405,31 @@ Mesh build_mesh(Soup soup, LoadReport& report) {
     origin.resize(positions.size());
     std::iota(origin.begin(), origin.end(), 0);
   }
-  std::vector<EdgeUse> uses;
+  EdgeUses uses;
   const std::vector<char> detached =
       make_consistent(triangles, corners, positions, origin, report, uses);
   MeshSources sources;
-  Mesh mesh = assemble(std::move(positions), triangles, detached, original_vertices, report,
-                       track_origins ? &sources : nullptr, std::move(uses));
+  Mesh mesh = assemble(std::move(positions), std::move(triangles), detached, original_vertices,
+                       report, track_origins ? &sources : nullptr, std::move(uses));
   keep_file_format(soup, mesh);
   if (!track_origins) return mesh;
   SoupOrigins origins;
   origins.vertex.reserve(sources.vertex.size());
   for (const int v : sources.vertex) origins.vertex.push_back(origin[v]);
   origins.face.reserve(sources.face.size());
-  for (const int t : sources.face) {
+  for (std::size_t f = 0; f < sources.face.size(); ++f) {
+    const int t = sources.face[f];
     origins.face.push_back(triangle_face[t]);
     if (!track_corners) continue;
     origins.face_corners.push_back(corners[t]);
-    const Triangle& c = triangles[t];
-    origins.face_corner_vertices.push_back({origin[c[0]], origin[c[1]], origin[c[2]]});
+    // The face's corners in its triangle's order (the circulator starts at the first), each the
+    // vertex it was made from, then that vertex's soup position.
+    Triangle c;
+    int k = 0;
+    for (const auto v : mesh.fv_range(FaceHandle(static_cast<int>(f)))) {
+      c[k++] = origin[sources.vertex[v.idx()]];
+    }
+    origins.face_corner_vertices.push_back(c);
   }
   copy_soup_attributes(soup, origins, mesh);
   return mesh;
