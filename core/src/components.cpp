@@ -3,46 +3,22 @@
 #include <algorithm>
 
 #include "deletion_flags.h"
+#include "sets_by_lowest.h"
 
 namespace holefill {
-
-namespace {
-
-// The pieces' ids, numbered by their lowest face, written into `piece_of_face` (which must hold
-// -1 for each deleted face and be of the faces' count): a union-find over the edges in their
-// order, each set named by its lowest face (every face's parent is at most the face itself), so
-// one pass in face order turns parents into ids. Returns the number of pieces. Reads OpenMesh's
-// arrays in order with 4 bytes a face beside them, where walking the pieces face by face through
-// them waits on a cache miss at each step.
-int number_pieces(const Mesh& mesh, std::vector<int>& piece_of_face) {
-  std::vector<int>& parent = piece_of_face;
-  for (const auto f : mesh.faces()) parent[f.idx()] = f.idx();
-  auto root = [&parent](int f) {
-    while (parent[f] != f) f = parent[f] = parent[parent[f]];
-    return f;
-  };
-  for (const auto e : mesh.edges()) {
-    const int a = mesh.face_handle(mesh.halfedge_handle(e, 0)).idx();
-    const int b = mesh.face_handle(mesh.halfedge_handle(e, 1)).idx();
-    if (a < 0 || b < 0 || parent[a] < 0 || parent[b] < 0) continue;
-    const int ra = root(a), rb = root(b);
-    parent[std::max(ra, rb)] = std::min(ra, rb);
-  }
-  int pieces = 0;
-  for (int f = 0; f < static_cast<int>(parent.size()); ++f) {
-    if (parent[f] < 0) continue;
-    // parent[f] < f was turned into its piece's id already.
-    parent[f] = parent[f] == f ? pieces++ : parent[parent[f]];
-  }
-  return pieces;
-}
-
-}  // namespace
 
 MeshPieces mesh_pieces(const Mesh& mesh) {
   MeshPieces result;
   result.piece_of_face.assign(mesh.n_faces(), -1);
-  result.pieces.resize(static_cast<std::size_t>(number_pieces(mesh, result.piece_of_face)));
+  for (const auto f : mesh.faces()) result.piece_of_face[f.idx()] = f.idx();
+  const int count = detail::number_sets_by_lowest(result.piece_of_face, [&mesh](auto join) {
+    for (const auto e : mesh.edges()) {
+      const FaceHandle a = mesh.face_handle(mesh.halfedge_handle(e, 0));
+      const FaceHandle b = mesh.face_handle(mesh.halfedge_handle(e, 1));
+      if (a.is_valid() && b.is_valid()) join(a.idx(), b.idx());
+    }
+  });
+  result.pieces.resize(static_cast<std::size_t>(count));
   for (const auto f : mesh.faces()) {
     MeshPiece& piece = result.pieces[static_cast<std::size_t>(result.piece_of_face[f.idx()])];
     ++piece.face_count;

@@ -7,6 +7,7 @@
 
 #include "geometry.h"
 #include "holefill/triangulate.h"
+#include "sets_by_lowest.h"
 
 namespace holefill {
 namespace {
@@ -57,24 +58,13 @@ std::map<int, std::size_t> valence_histogram(const Mesh& mesh) {
 
 std::vector<int> component_labels(const Mesh& mesh) {
   std::vector<int> label(mesh.n_vertices(), -1);
-  std::vector<VertexHandle> stack;
-  int components = 0;
-  for (const auto start : mesh.vertices()) {
-    if (label[start.idx()] >= 0) continue;
-    label[start.idx()] = components;
-    stack.push_back(start);
-    while (!stack.empty()) {
-      const VertexHandle v = stack.back();
-      stack.pop_back();
-      for (const auto w : mesh.vv_range(v)) {
-        if (label[w.idx()] < 0) {
-          label[w.idx()] = components;
-          stack.push_back(w);
-        }
-      }
+  for (const auto v : mesh.vertices()) label[v.idx()] = v.idx();
+  detail::number_sets_by_lowest(label, [&mesh](auto join) {
+    for (const auto e : mesh.edges()) {
+      const HalfedgeHandle h = mesh.halfedge_handle(e, 0);
+      join(mesh.from_vertex_handle(h).idx(), mesh.to_vertex_handle(h).idx());
     }
-    ++components;
-  }
+  });
   return label;
 }
 

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "holefill/components.h"
+#include "holefill/stats.h"
 #include "test_meshes.h"
 
 namespace holefill {
@@ -214,32 +215,64 @@ TEST(Pieces, AreTheFacesJoinedThroughEdgesAsAFloodFillFindsThem) {
   EXPECT_EQ(mesh_pieces(mesh).piece_of_face[7], -1);
 }
 
-// Faces of several grids added in a shuffled order, so that each piece's faces are scattered
-// and its lowest face is joined to the others late.
-TEST(Pieces, OfScatteredFacesAreNumberedByTheirLowestFace) {
+// Several grids whose faces are added in a shuffled order, so that each grid's faces are
+// scattered and its lowest face is joined to the others late; and a few vertices no face uses.
+Mesh scattered_grids() {
   std::vector<Mesh> grids;
-  for (int g = 0; g < 4; ++g)
+  for (int g = 0; g < 4; ++g) {
     grids.push_back(make_grid(6 + 3 * g, [](double, double) { return 0.0; }));
+  }
   Mesh mesh;
   std::vector<std::array<VertexHandle, 3>> faces;
   for (std::size_t g = 0; g < grids.size(); ++g) {
     const int offset = static_cast<int>(mesh.n_vertices());
-    for (const auto v : grids[g].vertices())
+    for (const auto v : grids[g].vertices()) {
       mesh.add_vertex(grids[g].point(v) + Point(10.0 * static_cast<double>(g), 0.0, 0.0));
+    }
     for (const auto f : grids[g].faces()) {
       std::array<VertexHandle, 3> corners;
       int c = 0;
       for (const auto v : grids[g].fv_range(f)) corners[c++] = VertexHandle(v.idx() + offset);
       faces.push_back(corners);
     }
+    mesh.add_vertex(Point(10.0 * static_cast<double>(g), -5.0, 0.0));
   }
   std::mt19937 rng(5);
   std::shuffle(faces.begin(), faces.end(), rng);
-  for (const auto& corners : faces) {
-    ASSERT_TRUE(mesh.add_face(corners[0], corners[1], corners[2]).is_valid());
-  }
+  for (const auto& corners : faces) mesh.add_face(corners[0], corners[1], corners[2]);
+  return mesh;
+}
+
+TEST(Pieces, OfScatteredFacesAreNumberedByTheirLowestFace) {
+  const Mesh mesh = scattered_grids();
+  ASSERT_EQ(mesh.n_faces(), 2u * (5 * 5 + 8 * 8 + 11 * 11 + 14 * 14));
   expect_flooded_pieces(mesh);
   EXPECT_EQ(mesh_pieces(mesh).pieces.size(), 4u);
+}
+
+// component_labels against a flood fill along the edges from each vertex not yet reached, in
+// vertex order: vertices that no face uses are components of their own.
+TEST(Components, AreTheVerticesJoinedByEdgesNumberedByTheirLowestVertex) {
+  for (const Mesh& mesh : {scattered_grids(), sphere_with_random_holes(3)}) {
+    std::vector<int> expected(mesh.n_vertices(), -1);
+    int count = 0;
+    for (const auto start : mesh.vertices()) {
+      if (expected[start.idx()] >= 0) continue;
+      std::vector<VertexHandle> front{start};
+      expected[start.idx()] = count;
+      while (!front.empty()) {
+        const VertexHandle v = front.back();
+        front.pop_back();
+        for (const auto w : mesh.vv_range(v)) {
+          if (expected[w.idx()] < 0) expected[w.idx()] = count, front.push_back(w);
+        }
+      }
+      ++count;
+    }
+    EXPECT_EQ(component_labels(mesh), expected);
+    EXPECT_EQ(connected_components(mesh), static_cast<std::size_t>(count));
+  }
+  EXPECT_EQ(connected_components(scattered_grids()), 8u);
 }
 
 }  // namespace
