@@ -4,6 +4,8 @@
 #include <array>
 #include <numeric>
 
+#include "../mesh_room.h"
+
 namespace holefill::io {
 // A counting sort by the smaller vertex (stable: triangles in order), then each vertex's uses by
 // the larger vertex: the order of sorting by (edge, triangle), in time linear in the triangles
@@ -192,8 +194,7 @@ void link_faces(Mesh& mesh, const std::vector<std::uint8_t>& first_corner_rank) 
   }
 }
 
-// Room for this many elements when there are `count`: an eighth more (see assemble).
-std::size_t with_room(std::size_t count) { return count + count / 8 + 64; }
+using detail::with_room;
 
 // The triangles with those marked in `detached` last, each on its own copies of its corners
 // (appended to `positions`); says where the faces and the copies came from in `sources` (when
