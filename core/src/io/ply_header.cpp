@@ -46,29 +46,6 @@ std::size_t size_of(PlyType type) {
   return 8;
 }
 
-bool fits(long long value, PlyType type) {
-  switch (type) {
-    case PlyType::Int8:
-      return value >= -128 && value <= 127;
-    case PlyType::UInt8:
-      return value >= 0 && value <= 255;
-    case PlyType::Int16:
-      return value >= -32768 && value <= 32767;
-    case PlyType::UInt16:
-      return value >= 0 && value <= 65535;
-    case PlyType::Int32:
-      return value >= -2147483648LL && value <= 2147483647LL;
-    case PlyType::UInt32:
-      return value >= 0 && value <= 4294967295LL;
-    case PlyType::Float32:
-    case PlyType::Float64:
-      break;
-  }
-  return true;
-}
-
-bool is_integer_type(PlyType type) { return type != PlyType::Float32 && type != PlyType::Float64; }
-
 namespace {
 
 // A header that promises more records than the body can hold is corrupt, and must not make us

@@ -17,9 +17,31 @@ using PlyType = ScalarType;
 
 // Bytes one value of `type` takes in a binary body.
 std::size_t size_of(PlyType type);
-bool is_integer_type(PlyType type);
+// Inline, as fits: both are asked for every value of an ASCII body.
+inline bool is_integer_type(PlyType type) {
+  return type != PlyType::Float32 && type != PlyType::Float64;
+}
 // `value` lies in the range of the integer type `type`.
-bool fits(long long value, PlyType type);
+inline bool fits(long long value, PlyType type) {
+  switch (type) {
+    case PlyType::Int8:
+      return value >= -128 && value <= 127;
+    case PlyType::UInt8:
+      return value >= 0 && value <= 255;
+    case PlyType::Int16:
+      return value >= -32768 && value <= 32767;
+    case PlyType::UInt16:
+      return value >= 0 && value <= 65535;
+    case PlyType::Int32:
+      return value >= -2147483648LL && value <= 2147483647LL;
+    case PlyType::UInt32:
+      return value >= 0 && value <= 4294967295LL;
+    case PlyType::Float32:
+    case PlyType::Float64:
+      break;
+  }
+  return true;
+}
 
 struct PlyProperty {
   std::string name;

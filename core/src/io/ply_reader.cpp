@@ -253,7 +253,10 @@ unsigned long long read_element(PlyBody& body, const PlyElement& element,
       for (long long item = 0; item < static_cast<long long>(count); ++item) {
         const double value = body.read(property.type);
         if (i != face_list) continue;
-        if (value < 0.0 || value != std::floor(value) || value > kMaxVertices) {
+        // A whole number in range (NaN is not): the int conversion is exact, where floor was a
+        // call per corner.
+        if (!(value >= 0.0 && value <= kMaxVertices) ||
+            value != static_cast<double>(static_cast<int>(value))) {
           fail(path, "face " + std::to_string(r) + " has an invalid vertex index " +
                          std::to_string(value));
         }

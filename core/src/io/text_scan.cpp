@@ -36,19 +36,6 @@ std::string_view take_token(std::string_view& text) {
   return token;
 }
 
-namespace {
-
-// from_chars takes no leading '+': drops one. False when nothing (or a sign again) follows.
-bool drop_plus_sign(std::string_view& token) {
-  if (!token.empty() && token.front() == '+') {
-    token.remove_prefix(1);
-    if (!token.empty() && token.front() == '-') return false;
-  }
-  return !token.empty();
-}
-
-}  // namespace
-
 bool parse_double(std::string_view token, double& value) {
   if (!drop_plus_sign(token)) return false;
   const char* end = token.data() + token.size();
@@ -69,59 +56,9 @@ bool parse_integer(std::string_view token, long long& value) {
   return stop == end && error == std::errc();
 }
 
-namespace {
-
-// The number of digits (0 to 8) that the `available` bytes at `p` start with (the first 8 of
-// them), and their value: all eight tested and combined at once (SWAR, as fast_float and
-// simdjson read eight digits), where from_chars takes some ten instructions a digit; face
-// indices are most of an OBJ's numbers. Fewer than eight bytes (a line's last number) are read
-// one at a time (a partial load went through a memcpy call).
-[[gnu::always_inline]] inline int leading_digits(const char* p, std::size_t available,
-                                                 std::uint64_t& value) {
-  if (available < 8) {
-    std::uint64_t short_value = 0;
-    int count = 0;
-    for (; count < static_cast<int>(available); ++count) {
-      const unsigned digit = static_cast<unsigned char>(p[count]) - unsigned{'0'};
-      if (digit > 9) break;
-      short_value = short_value * 10 + digit;
-    }
-    if (count) value = short_value;
-    return count;
-  }
-  std::uint64_t bytes;
-  std::memcpy(&bytes, p, sizeof bytes);  // one load
-  if constexpr (std::endian::native != std::endian::little) bytes = __builtin_bswap64(bytes);
-  // A byte's high bit is set in either sum unless it is '0' to '9'; what a non-digit borrows or
-  // carries only reaches the bytes after it, which are not counted.
-  const std::uint64_t not_digit =
-      ((bytes - 0x3030303030303030) | (bytes + 0x4646464646464646)) & 0x8080808080808080;
-  const int count = not_digit ? std::countr_zero(not_digit) / 8 : 8;
-  if (count == 0) return 0;
-  // The digits, first one highest, as "00..0ddd": then 8-digit arithmetic needs no cases.
-  std::uint64_t digits = (bytes - 0x3030303030303030) << (8 * (8 - count));
-  digits = digits * 10 + (digits >> 8);
-  value = (((digits & 0x000000FF000000FF) * (100 + (1000000ull << 32))) +
-           (((digits >> 16) & 0x000000FF000000FF) * (1 + (10000ull << 32)))) >>
-          32;
-  return count;
-}
-
-}  // namespace
-
-bool take_integer_prefix(std::string_view& text, long long& value) {
+bool take_long_integer_prefix(std::string_view& text, long long& value) {
   std::string_view digits = text;
   if (!drop_plus_sign(digits)) return false;
-  const std::size_t sign = digits.front() == '-' ? 1 : 0;
-  std::uint64_t magnitude = 0;
-  const int count = leading_digits(digits.data() + sign, digits.size() - sign, magnitude);
-  if (count == 0) return false;
-  if (count < 8) {  // else more may follow: from_chars below
-    value = sign ? -static_cast<long long>(magnitude) : static_cast<long long>(magnitude);
-    text.remove_prefix(static_cast<std::size_t>(digits.data() - text.data()) + sign +
-                       static_cast<std::size_t>(count));
-    return true;
-  }
   const auto [stop, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (error != std::errc()) return false;
   text.remove_prefix(static_cast<std::size_t>(stop - text.data()));
@@ -217,16 +154,6 @@ bool take_double(std::string_view& text, double& value) {
   }
   // Not a whole token, out of range or no number: the token's own rules decide.
   return parse_double(take_token(text), value);
-}
-
-bool take_integer(std::string_view& text, long long& value) {
-  skip_blanks(text);
-  std::string_view rest = text;
-  if (take_integer_prefix(rest, value) && at_token_end(rest)) {
-    text = rest;
-    return true;
-  }
-  return parse_integer(take_token(text), value);
 }
 
 // The first `c` at or after `from` in `text` (text.size() when none).
