@@ -18,8 +18,13 @@ if [ "${CI:-}" = true ] || [ "${HOLEFILL_SANITIZE_PASS:-0}" = 1 ]; then
   phase "sanitizer build in $SANITIZE_DIR"
   # Not -Werror here: GCC's -Wmaybe-uninitialized misfires inside OpenMesh's headers under ASan.
   # -O1 -g1 halves the compile time of -O2 -g and keeps line numbers in the reports.
+  # Unity batches of 16 files: the instrumented inline code of OpenMesh, CLI11 and the standard
+  # library is compiled once a batch instead of once a file (the library: 442 -> 313 s of CPU).
+  # So names private to a file (anonymous namespaces, static) must differ across the files of a
+  # target, as they must in any unity build.
   cmake -S . -B "$SANITIZE_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" -DHOLEFILL_SANITIZE=ON \
+    -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 \
     -DHOLEFILL_BUILD_VIEWER=OFF -DHOLEFILL_BUILD_BENCH=OFF >/dev/null
   cmake --build "$SANITIZE_DIR" --parallel "$(nproc)"
   phase "run the suite under the sanitizers"

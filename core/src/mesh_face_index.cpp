@@ -11,11 +11,11 @@ namespace holefill::detail {
 namespace {
 
 // The cells that pick the faces near the regions are about as large as the regions; a face
-// whose box spans more than kMaxCellsPerFace of them is filed without looking. The regions may
-// be filed under at most kMaxMarkedCells cells (a region far larger than the others makes the cells
-// larger), and a cell index needs at most kAxisBits bits on each axis.
+// whose box spans more than kMaxRegionCellsPerFace of them is filed without looking. The regions
+// may be filed under at most kMaxMarkedCells cells (a region far larger than the others makes the
+// cells larger), and a cell index needs at most kAxisBits bits on each axis.
 constexpr double kMaxMarkedCells = 1 << 22;
-constexpr double kMaxCellsPerFace = 64;
+constexpr double kMaxRegionCellsPerFace = 64;
 constexpr int kAxisBits = 21;
 constexpr double kMaxCellsPerAxis = 1 << kAxisBits;
 
@@ -89,7 +89,7 @@ class RegionCells {
   // Whether `box` overlaps a region; true also for a box spanning too many cells to look.
   bool overlaps_region(const Box& box) const {
     if (!box.overlaps(bound_)) return false;
-    return for_each_cell(box, kMaxCellsPerFace, [this, &box](std::uint64_t key) {
+    return for_each_cell(box, kMaxRegionCellsPerFace, [this, &box](std::uint64_t key) {
       for (int link = first_link_.find(key, kNoLink); link != kNoLink; link = links_[link].next) {
         if ((*regions_)[static_cast<std::size_t>(links_[link].region)].overlaps(box)) return true;
       }

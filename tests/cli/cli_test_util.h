@@ -17,6 +17,7 @@ namespace holefill::testing {
 namespace fs = std::filesystem;
 
 inline const fs::path kAssets = HOLEFILL_ASSETS_DIR;
+inline std::string bunny() { return (kAssets / "bunny.obj").string(); }
 
 class Cli : public ::testing::Test {
  protected:

@@ -13,8 +13,6 @@ namespace holefill {
 namespace {
 using namespace holefill::testing;
 
-std::string bunny() { return (kAssets / "bunny.obj").string(); }
-
 TEST_F(Cli, HelpForEachCommandOnStdout) {
   for (const auto& args :
        {std::vector<std::string>{"--help"}, {"help", "fill"}, {"fill", "--help"}, {"info", "-h"}}) {

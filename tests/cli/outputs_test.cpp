@@ -10,8 +10,6 @@ namespace holefill {
 namespace {
 using namespace holefill::testing;
 
-std::string bunny() { return (kAssets / "bunny.obj").string(); }
-
 // --report equal to the input replaced the mesh with JSON, exit 0.
 TEST_F(Cli, AReportNamingTheInputOrTheMeshOutputIsRefused) {
   const std::string input = in_dir("in.obj"), out = in_dir("out.obj");

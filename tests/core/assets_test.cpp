@@ -12,7 +12,7 @@
 namespace holefill {
 namespace {
 
-long euler_characteristic(const Mesh& mesh) {
+long elements_euler_characteristic(const Mesh& mesh) {
   return static_cast<long>(mesh.n_vertices()) - static_cast<long>(mesh.n_edges()) +
          static_cast<long>(mesh.n_faces());
 }
@@ -38,7 +38,7 @@ TEST_P(FillAsset, ClosesEveryHoleAndKeepsTheOriginal) {
   }
   EXPECT_TRUE(find_holes(mesh).empty());
   EXPECT_TRUE(testing::is_oriented_manifold(mesh));
-  EXPECT_EQ(euler_characteristic(mesh), asset.euler_when_closed);
+  EXPECT_EQ(elements_euler_characteristic(mesh), asset.euler_when_closed);
   EXPECT_TRUE(testing::original_part_unchanged(before, mesh));
 }
 

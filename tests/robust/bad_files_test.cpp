@@ -70,13 +70,6 @@ class BadFiles : public ScratchTest {
   }
 };
 
-bool has_warning(const LoadReport& report, const std::string& part) {
-  for (const auto& warning : report.warnings) {
-    if (warning.find(part) != std::string::npos) return true;
-  }
-  return false;
-}
-
 TEST_F(BadFiles, EveryFormatAndEncodingReadsTheSameClosedTetrahedron) {
   const std::vector<fs::path> files{
       write("t.obj", obj_text(kTetraPoints, kTetraFaces)),

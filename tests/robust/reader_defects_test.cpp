@@ -15,13 +15,6 @@ namespace holefill::testing {
 namespace {
 namespace fs = std::filesystem;
 
-bool has_warning(const LoadReport& report, const std::string& part) {
-  for (const auto& warning : report.warnings) {
-    if (warning.find(part) != std::string::npos) return true;
-  }
-  return false;
-}
-
 // The tetrahedron reads as itself: its 4 vertices at their positions, 4 faces, closed.
 void expect_tetrahedron(const Mesh& mesh, const std::string& what) {
   SCOPED_TRACE(what);

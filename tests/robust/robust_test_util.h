@@ -81,4 +81,12 @@ class ScratchTest : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
+// Whether one of the load's warnings contains `part`.
+inline bool has_warning(const LoadReport& report, const std::string& part) {
+  for (const auto& warning : report.warnings) {
+    if (warning.find(part) != std::string::npos) return true;
+  }
+  return false;
+}
+
 }  // namespace holefill::testing
