@@ -260,12 +260,7 @@ bool OffBody::append(OffBody& later) {
   Soup& more = later.soup_;
   const bool first_face_here = record_ > counts_.vertices;
   if (first_face_here && !soup_.layout.face.empty() && more.face_count() != 0) return false;
-  append_and_free(soup_.positions, more.positions);
-  const std::size_t corners = soup_.corners.size();
-  append_and_free(soup_.corners, more.corners);
-  soup_.face_end.reserve(soup_.face_count() + more.face_count());
-  for (const std::size_t end : more.face_end) soup_.face_end.push_back(corners + end);
-  append_and_free(soup_.face_line, more.face_line);
+  append_positions_and_faces(soup_, more);
   if (!first_face_here) {
     soup_.layout.face = more.layout.face;
     soup_.face_values = std::move(more.face_values);

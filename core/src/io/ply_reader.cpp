@@ -357,11 +357,7 @@ namespace {
 
 // Appends the soup `later` read of a body's second part to `soup` (their columns alike).
 void append_part(Soup& soup, Soup& later) {
-  append_and_free(soup.positions, later.positions);
-  const std::size_t corners = soup.corners.size();
-  append_and_free(soup.corners, later.corners);
-  soup.face_end.reserve(soup.face_count() + later.face_count());
-  for (const std::size_t end : later.face_end) soup.face_end.push_back(corners + end);
+  append_positions_and_faces(soup, later);
   for (std::size_t c = 0; c < later.vertex_values.size(); ++c) {
     append_and_free(soup.vertex_values[c], later.vertex_values[c]);
   }

@@ -12,6 +12,8 @@
 #include <thread>
 #include <vector>
 
+#include "soup.h"
+
 namespace holefill::io {
 
 // From this size on, a text file's two parts are read on two threads (below, a thread costs more
@@ -61,6 +63,19 @@ template <class T>
 void append_and_free(std::vector<T>& to, std::vector<T>& from) {
   to.insert(to.end(), from.begin(), from.end());
   std::vector<T>().swap(from);
+}
+
+// Appends the positions and faces `later` read of a second part to `soup`, freeing them there:
+// its corners index the whole file's vertices and its faces' lines count the whole file's lines
+// (OFF, PLY), so only the face ends move. Attribute columns are the caller's.
+inline void append_positions_and_faces(Soup& soup, Soup& later) {
+  append_and_free(soup.positions, later.positions);
+  const std::size_t corners = soup.corners.size();
+  append_and_free(soup.corners, later.corners);
+  soup.face_end.reserve(soup.face_count() + later.face_count());
+  for (const std::size_t end : later.face_end) soup.face_end.push_back(corners + end);
+  std::vector<std::size_t>().swap(later.face_end);
+  append_and_free(soup.face_line, later.face_line);
 }
 
 }  // namespace holefill::io
