@@ -1,9 +1,12 @@
 // The full search on several threads. Rows run bottom-up: cell (i, k) needs (i, m), m < k, from
-// its own row and (m, k), m > i, from the rows below, and row i + 1 needs them too, so row i can
-// follow row i + 1 cell by cell. Each thread takes the next row down and follows the row below
-// it (RowWavefront); a row's cells cost a little more than the row below's, so a following row
-// rarely waits. Each cell is computed exactly as on one thread, from the same inputs, so the
-// triangulation does not depend on the number of threads (tests compare).
+// its own row and (m, k), m > i, from the rows below, so row i can follow row i + 1 cell by cell.
+// The rows are taken in strips of kStripRows: a thread takes the next strip up and solves it
+// column by column, each column's cells bottom-up, once the strip below has finished that column
+// (RowWavefront). A column's keys, areas and normals then are read from the cache once for the
+// strip's cells instead of once per cell (the column tables are larger than the cache), and the
+// other thread writes into a column's cache lines only where its strip begins, instead of into
+// every other cell's line. Each cell is computed exactly as on one thread, from the same inputs,
+// so the triangulation does not depend on the number of threads (tests compare).
 #include "full_search.h"
 
 #include <algorithm>
@@ -25,6 +28,12 @@ namespace {
 // Below this many edges a search takes under a few milliseconds on one core, and starting and
 // feeding threads costs more than it saves (bench/README.md).
 constexpr int kParallelMinEdges = 120;
+
+// Rows per strip: a strip reads each column's tables once for this many cells, and the strip's own
+// rows (the left sides of its candidates) stay in the second-level cache up to thousands of edges.
+// At 2,000 edges 8 rows took 3.3-3.5 s on one thread, 16 rows 3.0-3.1 s, single rows 4.6-5.3 s;
+// at 500 edges the three are the same within the machine's noise (bench/README.md).
+constexpr int kStripRows = 16;
 
 // Cell (i, k), 0 <= i < k < n, of the triangular tables, stored row by row (row i holds
 // k = i+1 ... n-1) or column by column (column k holds i = 0 ... k-1).
@@ -95,7 +104,7 @@ struct Tables {
   std::vector<std::size_t> row_starts;  // row_start(n, i), looked up rather than recomputed
 };
 
-// Solves whole rows of the tables; one per thread. With kPrune a candidate is skipped when the
+// Solves strips of rows of the tables; one per thread. With kPrune a candidate is skipped when the
 // larger of its two sides' keys already exceeds the best key (a lower bound of its value,
 // weights.h) or ties it with no smaller area, then as soon as a partial value cannot beat the
 // best (try_apex). The values computed are the same either way, so the result is the plain
@@ -104,20 +113,23 @@ template <bool kPrune, class Weight>
 class RowSolver {
  public:
   RowSolver(const HolePolygon& polygon, const Weight& weight, Tables& tables)
-      : polygon_(polygon),
-        weight_(weight),
-        t_(tables),
-        row_normal_(polygon.points.size()),
-        first_within_bound_(fastest_bound_scan()) {}
+      : polygon_(polygon), weight_(weight), t_(tables), first_within_bound_(fastest_bound_scan()) {}
 
-  // Cells (i, i+2) ... (i, n-1), each once row i + 1 has finished its column.
-  void solve_row(int i, RowWavefront& wavefront) {
-    current_row_ = i;
+  // Rows lowest ... highest (highest <= n - 3), column by column: cells (r, k) for r + 2 <= k,
+  // from the highest row down, once the rows below the strip have finished column k.
+  void solve_strip(int lowest, int highest, RowWavefront& wavefront) {
+    const int n = t_.n;
+    strip_lowest_ = lowest;
+    strip_normals_.resize(static_cast<std::size_t>(highest - lowest + 1) *
+                          static_cast<std::size_t>(n));
     int below_finished = -1;
-    for (int k = i + 2; k < t_.n; ++k) {
-      if (k - i > 2 && k > below_finished) below_finished = wavefront.wait_for(i + 1, k);
-      solve_cell(i, k);
-      wavefront.publish(i, k);
+    const bool strip_below = highest + 1 <= n - 3;
+    for (int k = lowest + 2; k < n; ++k) {
+      if (strip_below && k - highest > 2 && k > below_finished) {
+        below_finished = wavefront.wait_for(highest + 1, k);
+      }
+      for (int i = std::min(highest, k - 2); i >= lowest; --i) solve_cell(i, k);
+      wavefront.publish(lowest, k);
     }
   }
 
@@ -137,6 +149,9 @@ class RowSolver {
       t_.store(i, k, CellBest{});
       return;
     }
+    current_row_ = i;
+    row_normal_ = strip_normals_.data() +
+                  static_cast<std::size_t>(i - strip_lowest_) * static_cast<std::size_t>(n);
     const CellBest best = best_apex(i, k);
     t_.store(i, k, best);
     if (best.apex >= 0 && Weight::kUsesDihedral) {
@@ -201,8 +216,8 @@ class RowSolver {
   }
 
   // Normal of the triangle chosen for sub-polygon (a, b), or of the mesh face across (a, b).
-  // The current row's are read from a copy in row order, where the row reads them over and
-  // over; others from the table, in column order as the apex loop walks them.
+  // The current row's are read from the strip's copy in row order, where the row reads them over
+  // and over; others from the table, in column order as the apex loop walks them.
   const Point& normal_across(int a, int b) const {
     if (b == a + 1) return polygon_.outside_normals[a];
     if (a == current_row_) return row_normal_[b];
@@ -212,7 +227,9 @@ class RowSolver {
   const HolePolygon& polygon_;
   const Weight& weight_;
   Tables& t_;
-  std::vector<Point> row_normal_;  // row_normal_[k]: of cell (current_row_, k)
+  std::vector<Point> strip_normals_;  // row by row: of cell (r, k) at (r - strip_lowest_) * n + k
+  int strip_lowest_ = 0;
+  Point* row_normal_ = nullptr;  // row_normal_[k]: of cell (current_row_, k), in strip_normals_
   int current_row_ = -1;
   BoundScan first_within_bound_;
 };
@@ -258,26 +275,26 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
   RowWavefront wavefront(n);
   std::vector<RowSolver<kPrune, Weight>> solvers(
       static_cast<std::size_t>(threads), RowSolver<kPrune, Weight>(polygon, weight, tables));
-  std::atomic<int> next_row{n - 3};
-  // A cancel stops the taking of rows; a row once taken is finished, since the rows above it
-  // that were taken before the cancel wait for it.
-  auto solve_rows = [&](RowSolver<kPrune, Weight>& solver) {
+  std::atomic<int> next_strip{0};  // counted from the bottom
+  // A cancel stops the taking of strips; a strip once taken is finished, since the strips above
+  // it that were taken before the cancel wait for it.
+  auto solve_strips = [&](RowSolver<kPrune, Weight>& solver) {
     while (!cancelled(options)) {
-      const int i = next_row--;
-      if (i < 0) break;
-      solver.solve_row(i, wavefront);
+      const int highest = n - 3 - kStripRows * next_strip++;
+      if (highest < 0) break;
+      solver.solve_strip(std::max(0, highest - kStripRows + 1), highest, wavefront);
     }
   };
   {
     std::vector<std::jthread> helpers;
     for (int t = 1; t < threads; ++t) {
       try {
-        helpers.emplace_back(solve_rows, std::ref(solvers[static_cast<std::size_t>(t)]));
+        helpers.emplace_back(solve_strips, std::ref(solvers[static_cast<std::size_t>(t)]));
       } catch (const std::system_error&) {
-        break;  // no more threads to be had: rows are taken as they come, fewer threads suffice
+        break;  // no more threads to be had: strips are taken as they come, fewer threads suffice
       }
     }
-    solve_rows(solvers[0]);
+    solve_strips(solvers[0]);
   }
   if (cancelled(options) || tables.apex[tables.row_index(0, n - 1)] == kNoApex) return std::nullopt;
 
@@ -293,13 +310,13 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
 std::optional<PolygonTriangulation> full_search(const HolePolygon& polygon,
                                                 const TriangulateOptions& options) {
   const int n = static_cast<int>(polygon.points.size());
-  const int rows = std::max(1, n - 2);
+  const int strips = std::max(1, (n - 2 + kStripRows - 1) / kStripRows);
   const bool automatic = options.threads == 0;
   const int wanted = automatic ? (n < kParallelMinEdges ? 1 : idle_cores())
-                               : static_cast<int>(std::min<unsigned>(options.threads, rows));
+                               : static_cast<int>(std::min<unsigned>(options.threads, strips));
   // Threads asked for explicitly are the caller's business; automatic ones share the cores.
   const HelperThreads helpers(automatic ? wanted - 1 : 0);
-  const int threads = std::clamp(automatic ? 1 + helpers.count() : wanted, 1, rows);
+  const int threads = std::clamp(automatic ? 1 + helpers.count() : wanted, 1, strips);
   return with_weight(options, [&](const auto& weight) {
     return options.prune ? solve<true>(polygon, weight, threads, options)
                          : solve<false>(polygon, weight, threads, options);

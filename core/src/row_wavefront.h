@@ -1,7 +1,7 @@
 // How the rows of the full search's table follow one another across threads (full_search.cpp):
-// each row publishes the last column it has finished, and the row above waits for a column before
-// reading it. Release/acquire ordering makes a finished cell's values, and everything the row read
-// before it, visible to the waiting row.
+// each strip of rows publishes, under its lowest row, the last column it has finished, and the
+// strip above waits for a column before reading it. Release/acquire ordering makes a finished
+// cell's values, and everything the row read before it, visible to the waiting row.
 #pragma once
 
 #include <atomic>

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "bound_scan.h"
+#include "dp_step.h"
 #include "holefill/triangulate.h"
 #include "test_meshes.h"
 #include "weight_keys.h"
@@ -67,6 +68,87 @@ TEST(FullSearch, GivesTheSameTriangulationOnAnyNumberOfThreads) {
               << to_string(weight) << ", n = " << polygon.points.size() << ", fold " << fold_limit
               << ", " << threads << " threads";
           EXPECT_EQ(result->quality.area, expected->quality.area);
+        }
+      }
+    }
+  }
+}
+
+// The dynamic program as the paper states it, independent of the full search's strips, tables and
+// threads: every cell row by row from the bottom, every apex in order, with the same one step
+// (detail::try_apex) and plain n x n tables.
+std::vector<std::array<int, 3>> row_by_row_reference(const HolePolygon& input, WeightKind kind) {
+  const HolePolygon polygon = detail::canonical(input);  // unit normals, as the search makes them
+  const int n = static_cast<int>(polygon.points.size());
+  const auto cell = [n](int i, int k) { return static_cast<std::size_t>(i) * n + k; };
+  std::vector<WeightValue> value(cell(n, 0));  // polygon edges (k = i + 1) keep {0, 0}
+  std::vector<int> apex(cell(n, 0), -1);
+  std::vector<Point> normal(cell(n, 0), Point(0, 0, 0));
+  std::vector<bool> forbidden(cell(n, 0), false);
+  for (const auto& [a, b] : polygon.forbidden_chords) {
+    forbidden[cell(std::min(a, b), std::max(a, b))] = true;
+  }
+  const auto normal_across = [&](int a, int b) -> const Point& {
+    return b == a + 1 ? polygon.outside_normals[a] : normal[cell(a, b)];
+  };
+  TriangulateOptions options{kind};
+  detail::with_weight(options, [&](const auto& weight) {
+    for (int i = n - 3; i >= 0; --i) {
+      for (int k = i + 2; k < n; ++k) {
+        detail::CellBest best;
+        if (!forbidden[cell(i, k)] || (i == 0 && k == n - 1)) {
+          for (int m = i + 1; m < k; ++m) {
+            const WeightValue& left = value[cell(i, m)];
+            const WeightValue& right = value[cell(m, k)];
+            if (left.key == weight_key::kInfeasible || right.key == weight_key::kInfeasible) {
+              continue;
+            }
+            detail::try_apex<false>(weight, polygon, i, m, k, left,
+                                    detail::SideValue{right.key, right.area, &right.area},
+                                    normal_across, best);
+          }
+        }
+        apex[cell(i, k)] = best.apex;
+        value[cell(i, k)] =
+            best.apex >= 0 ? best.value : WeightValue{weight_key::kInfeasible, INFINITY};
+        if (best.apex >= 0) {
+          normal[cell(i, k)] =
+              detail::unit_normal(polygon.points[i], polygon.points[best.apex], polygon.points[k]);
+        }
+      }
+    }
+    return 0;
+  });
+  if (apex[cell(0, n - 1)] < 0) return {};
+  return detail::trace_triangles(n, [&](int i, int k) { return apex[cell(i, k)]; });
+}
+
+// Strips of rows meet at every eighth or sixteenth row and run on different threads: holes whose
+// rows end anywhere in a strip, with forbidden chords, give the reference's triangulation.
+TEST(FullSearch, MatchesTheRowByRowDynamicProgramAcrossStrips) {
+  std::mt19937 rng(5);
+  for (const int n : {6, 10, 17, 18, 19, 25, 34, 47, 66, 131, 200}) {
+    HolePolygon polygon = testing::wavy_hole(n, 7 * n);
+    std::bernoulli_distribution pick(0.05);
+    for (int i = 0; i < n; ++i) {
+      for (int k = i + 2; k < n; ++k) {
+        if (pick(rng)) polygon.forbidden_chords.emplace_back(i, k);
+      }
+    }
+    for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}) {
+      const auto expected = row_by_row_reference(polygon, weight);
+      for (const unsigned threads : {1u, 2u, 3u}) {
+        for (const bool prune : {true, false}) {
+          TriangulateOptions options{weight};
+          options.threads = threads;
+          options.prune = prune;
+          options.restricted.above_edges = 0;
+          const auto result = triangulate_polygon(polygon, options);
+          ASSERT_EQ(result.has_value(), !expected.empty()) << "n = " << n;
+          if (result) {
+            EXPECT_EQ(result->triangles, expected) << to_string(weight) << ", n = " << n << ", "
+                                                   << threads << " threads, prune " << prune;
+          }
         }
       }
     }
