@@ -31,7 +31,7 @@ class Checker {
     for (const auto& t : triangulation.triangles) {
       corners.push_back({polygon_.points[t[0]], polygon_.points[t[1]], polygon_.points[t[2]]});
     }
-    return triangle_intersections(mesh_, corners, {}, grid());
+    return triangle_intersections(mesh_, corners, nullptr, grid());
   }
 
  private:

@@ -10,6 +10,7 @@
 #include "holefill/mesh.h"
 #include "holefill/patch.h"
 #include "mesh_face_index.h"
+#include "patch_face_set.h"
 
 namespace holefill::detail {
 
@@ -23,14 +24,13 @@ struct IntersectingPair {
 
 // The pairs of a patch triangle and another triangle (of the mesh outside the patch, or of the
 // patch: each such pair once) that intersect other than along what they share; degenerate
-// triangles are skipped. Faces of the mesh that `in_patch` marks (by face index; may be empty)
-// are not compared. `around` (when given) holds the mesh's faces outside the patch, by face
-// index, so that only faces near the patch are looked at; otherwise the mesh is scanned. Safe for
-// any finite coordinates: triangles are compared at a power-of-two scale that keeps products
-// finite.
+// triangles are skipped. Faces of the mesh in `in_patch` (may be null: none) are not compared.
+// `around` (when given) holds the mesh's faces outside the patch, by face index, so that only faces
+// near the patch are looked at; otherwise the mesh is scanned. Safe for any finite coordinates:
+// triangles are compared at a power-of-two scale that keeps products finite.
 std::vector<IntersectingPair> triangle_intersections(
     const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
-    const std::vector<bool>& in_patch, const MeshFaceIndex* around);
+    const PatchFaceSet* in_patch, const MeshFaceIndex* around);
 
 // The chords (i, k), i < k, between non-neighbouring points of a hole's polygon whose segment
 // passes through the interior of a face of the mesh (any triangle with such a side intersects
