@@ -37,6 +37,15 @@ bool holds(const Box& region, const Box& box) {
   return true;
 }
 
+// The regions' mean extent (0 for none), accumulated so that it cannot overflow.
+double mean_region_extent(const std::vector<Box>& regions) {
+  double mean = 0.0;
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    mean += ((regions[r].high - regions[r].low).max() - mean) / static_cast<double>(r + 1);
+  }
+  return mean;
+}
+
 Box grown_by_extent(Box box) {
   box.grow((box.high - box.low).max());
   return box;
@@ -63,11 +72,8 @@ class RegionCells {
   // doubles): every face is then filed. The regions must outlive the result.
   static std::optional<RegionCells> of(const std::vector<Box>& regions) {
     RegionCells cells;
-    double mean_extent = 0.0;
-    for (std::size_t r = 0; r < regions.size(); ++r) {
-      cells.bound_.add(regions[r]);
-      mean_extent += ((regions[r].high - regions[r].low).max() - mean_extent) / double(r + 1);
-    }
+    for (const Box& region : regions) cells.bound_.add(region);
+    const double mean_extent = mean_region_extent(regions);
     const Point span = cells.bound_.high - cells.bound_.low;
     cells.cell_ = mean_extent > 0.0 ? mean_extent : std::max(span.max(), 1.0);
     while (std::isfinite(cells.cell_) && !cells.fits(span, regions)) {
@@ -171,12 +177,22 @@ MeshFaceIndex::MeshFaceIndex(const Mesh& mesh, const std::vector<Box>& regions)
     : mesh_(mesh), indexed_faces_(static_cast<int>(mesh.n_faces())) {
   std::vector<Box> finite;
   std::copy_if(regions.begin(), regions.end(), std::back_inserter(finite), is_finite);
+  // Patches' faces added later are filed in cells of a hole's neighbourhood's size, so that a
+  // lookup across one neighbourhood touches a few cells.
+  added_ = BoxBuckets(mean_region_extent(finite));
   if (!finite.empty()) file_faces_near(std::move(finite));
 }
 
 void MeshFaceIndex::file_faces_near(std::vector<Box> regions) const {
-  Part part{std::move(regions), false, FaceGrid({})};
+  Part part{std::move(regions), false, FaceGrid({}), FaceGrid({})};
   part.everywhere = !std::all_of(part.regions.begin(), part.regions.end(), is_finite);
+  if (!part.everywhere) {
+    std::vector<std::pair<int, Box>> numbered;
+    for (std::size_t r = 0; r < part.regions.size(); ++r) {
+      numbered.emplace_back(static_cast<int>(r), part.regions[r]);
+    }
+    part.region_grid = FaceGrid(std::move(numbered));
+  }
   std::optional<RegionCells> cells;
   if (!part.everywhere) cells = RegionCells::of(part.regions);
   part.everywhere = part.everywhere || !cells;
@@ -202,8 +218,8 @@ const MeshFaceIndex::Part& MeshFaceIndex::part_holding(const Box& box) const {
   for (const Part& part : parts_) {
     if (part.everywhere) return part;
     if (!finite) continue;
-    for (const Box& region : part.regions) {
-      if (holds(region, box)) return part;
+    for (const int r : part.region_grid.near(box)) {
+      if (holds(part.regions[static_cast<std::size_t>(r)], box)) return part;
     }
   }
   file_faces_near({finite ? grown_by_extent(box) : box});
@@ -212,13 +228,7 @@ const MeshFaceIndex::Part& MeshFaceIndex::part_holding(const Box& box) const {
 
 std::vector<int> MeshFaceIndex::near(const Box& box) const {
   std::vector<int> ids = part_holding(box).grid.near(box);
-  bool added = false;
-  for (const auto& [id, entry] : added_) {
-    if (!entry.overlaps(box)) continue;
-    ids.push_back(id);
-    added = true;
-  }
-  if (added) {
+  if (added_.append_overlapping(box, ids) > 0) {
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   }

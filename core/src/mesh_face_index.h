@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "box_buckets.h"
 #include "face_grid.h"
 #include "holefill/mesh.h"
 
@@ -29,7 +30,7 @@ class MeshFaceIndex {
 
   // An entry added after the index was made (a finished patch's face, id = its index): found by
   // every lookup whose box it overlaps.
-  void add(int id, const Box& box) { added_.emplace_back(id, box); }
+  void add(int id, const Box& box) { added_.add(id, box); }
 
   // The ids (face indices) of the indexed faces and added entries whose boxes overlap `box`,
   // ascending, each once. A box that no region holds first files the faces near it (a pass over
@@ -42,11 +43,13 @@ class MeshFaceIndex {
 
  private:
   // The faces near some regions, in one grid; `everywhere` when a region was not a finite box
-  // (then every face is filed, as a NaN box overlaps every box).
+  // (then every face is filed, as a NaN box overlaps every box). The regions too are in a grid,
+  // so that finding the part that holds a lookup does not test every hole's region.
   struct Part {
     std::vector<Box> regions;
     bool everywhere = false;
     FaceGrid grid;
+    FaceGrid region_grid;
     std::size_t faces = 0;
   };
   const Part& part_holding(const Box& box) const;
@@ -55,7 +58,7 @@ class MeshFaceIndex {
   const Mesh& mesh_;
   int indexed_faces_;                // the faces below this index (those not deleted) are indexed
   mutable std::vector<Part> parts_;  // grown by lookups (the index is read by one thread)
-  std::vector<std::pair<int, Box>> added_;
+  BoxBuckets added_;
 };
 
 }  // namespace holefill::detail
