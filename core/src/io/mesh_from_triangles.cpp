@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <numeric>
 
 #include "../mesh_room.h"
+#include "huge_pages.h"
 
 namespace holefill::io {
 // A counting sort by the smaller vertex (stable: triangles in order), then each vertex's uses by
@@ -22,7 +24,7 @@ EdgeUses::EdgeUses(const std::vector<Triangle>& triangles) {
   }
   // Counted at v + 2 and summed, start_[v + 1] is where v's run starts; filling it moves it to
   // where the run ends, which is where v + 1's starts.
-  start_.assign(std::size_t{vertices} + 2, 0);
+  start_ = huge_page_vector(std::size_t{vertices} + 2, std::size_t{0});
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (int c = 0; c < 3; ++c) {
       const auto [a, b] = ends(t, c);
@@ -32,8 +34,7 @@ EdgeUses::EdgeUses(const std::vector<Triangle>& triangles) {
   for (std::size_t v = 0; v + 1 < start_.size(); ++v) start_[v + 1] += start_[v];
   size_ = 3 * triangles.size();
   for (std::size_t first = 0; first < size_; first += std::size_t{1} << kBlockBits) {
-    blocks_.push_back(
-        std::make_unique_for_overwrite<EdgeUse[]>(std::min(size_ - first, kBlockMask + 1)));
+    blocks_.push_back(huge_page_array<EdgeUse>(std::min(size_ - first, kBlockMask + 1)));
   }
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (int c = 0; c < 3; ++c) {
@@ -127,6 +128,18 @@ std::size_t count_edges(const EdgeUses& uses) {
 // The edges the mesh's arrays grow by at a time while the uses they come from are handed back.
 constexpr std::size_t kEdgesAtATime = std::size_t{1} << 16;
 
+// Where the mesh's edges grow to from e: kEdgesAtATime more, at most `edges`, moved back to the
+// end of a huge page where one ends in between (a huge page is made resident whole: the array
+// then holds none ahead of the uses handed back).
+std::size_t next_edges_end(const Mesh& mesh, std::size_t e, std::size_t edges) {
+  const std::size_t end = std::min(edges, e + kEdgesAtATime);
+  const auto first = reinterpret_cast<std::uintptr_t>(&mesh.edge(EdgeHandle(0)));
+  const std::size_t size = sizeof(mesh.edge(EdgeHandle(0)));
+  const std::uintptr_t page_end = (first + end * size) & ~std::uintptr_t{kHugePageBytes - 1};
+  const std::size_t before_page_end = page_end > first ? (page_end - first) / size : 0;
+  return before_page_end > e ? before_page_end : end;
+}
+
 // Gives the mesh, whose vertices and faces are made, the edges of the uses, numbered in their
 // order as OpenMesh numbers edges made in that order: edge e's first use (its lowest triangle)
 // has halfedge 2 e, the other triangle on it 2 e + 1. Each halfedge gets its vertex and face, and
@@ -134,11 +147,15 @@ constexpr std::size_t kEdgesAtATime = std::size_t{1} << 16;
 // them). The mesh's edges grow as the uses are read, and the blocks of uses read are freed, so
 // the two are never whole side by side.
 void add_edges(Mesh& mesh, EdgeUses uses, std::size_t edges) {
+  if (edges > 0) {  // the reserved array, on huge pages before it is written beyond its first edge
+    mesh.resize(mesh.n_vertices(), 1, mesh.n_faces());
+    prefer_huge_pages(&mesh.edge(EdgeHandle(0)), edges * sizeof(mesh.edge(EdgeHandle(0))));
+  }
   std::size_t e = 0;
   uses.for_each_edge([&](int smaller, std::size_t first, std::size_t last) {
     if (e == mesh.n_edges()) {
       uses.release_before(first);
-      mesh.resize(mesh.n_vertices(), std::min(edges, e + kEdgesAtATime), mesh.n_faces());
+      mesh.resize(mesh.n_vertices(), next_edges_end(mesh, e, edges), mesh.n_faces());
     }
     const int larger = uses[first].larger();
     for (std::size_t k = first; k < last; ++k) {
@@ -250,7 +267,7 @@ std::size_t mesh_capacity(std::size_t count) { return with_room(count); }
 // Faces that could not join the surface (an edge with a third face, a face turned against its
 // neighbours) are kept, on their own copies of their corners, so no data is lost.
 Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
-              const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
+              std::vector<char> detached, std::size_t original_vertices, LoadReport& report,
               MeshSources* sources, EdgeUses uses) {
   if (sources) {
     sources->vertex = identity(positions.size());
@@ -264,8 +281,9 @@ Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
   } else if (sources) {
     sources->face = identity(triangles.size());
   }
+  std::vector<char>().swap(detached);  // not held while the mesh's arrays grow
   if (uses.empty()) uses = EdgeUses(triangles);
-  std::vector<std::uint8_t> first_corner_rank(triangles.size());
+  std::vector<std::uint8_t> first_corner_rank = huge_page_vector(triangles.size(), std::uint8_t{0});
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     first_corner_rank[t] = rank_of_first_corner(triangles[t]);
   }
@@ -274,6 +292,11 @@ Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
   Mesh mesh;
   mesh.reserve(with_room(positions.size()), with_room(edges), with_room(first_corner_rank.size()));
   add_vertices(mesh, positions);
+  if (!first_corner_rank.empty()) {  // the faces' array too, on huge pages before it is written
+    mesh.resize(mesh.n_vertices(), 0, 1);
+    prefer_huge_pages(&mesh.face(FaceHandle(0)),
+                      first_corner_rank.size() * sizeof(mesh.face(FaceHandle(0))));
+  }
   mesh.resize(mesh.n_vertices(), 0, first_corner_rank.size());
   add_edges(mesh, std::move(uses), edges);
   link_faces(mesh, first_corner_rank);

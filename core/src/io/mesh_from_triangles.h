@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "holefill/io.h"
+#include "huge_pages.h"
 
 namespace holefill::io {
 
@@ -40,7 +41,7 @@ static_assert(sizeof(EdgeUse) == 8);
 
 // Every use of an edge by a triangle, sorted by edge (smaller vertex, then larger), then by
 // triangle; the uses of the edges whose smaller vertex is v are [start(v), start(v + 1)). They are
-// kept in blocks of a megabyte so that the mesh's arrays can grow while the uses they were made
+// kept in blocks of a huge page so that the mesh's arrays can grow while the uses they were made
 // from are handed back (release_before).
 class EdgeUses {
  public:
@@ -74,12 +75,12 @@ class EdgeUses {
   void release_before(std::size_t first);
 
  private:
-  static constexpr int kBlockBits = 17;  // 128 K uses, 1 MB
+  static constexpr int kBlockBits = 18;  // 256 K uses, 2 MB: one huge page
   static constexpr std::size_t kBlockMask = (std::size_t{1} << kBlockBits) - 1;
   void sort_runs_by_larger();
 
   std::vector<std::size_t> start_;
-  std::vector<std::unique_ptr<EdgeUse[]>> blocks_;
+  std::vector<HugePageArray<EdgeUse>> blocks_;
   std::size_t size_ = 0;
 };
 
@@ -98,14 +99,14 @@ struct MeshSources {
 // (empty: made here). Linear in the triangles. Edges are numbered in the uses' order, an edge's
 // first use (its lowest triangle) taking halfedge 2 e; a face's halfedge arrives at its triangle's
 // first corner; a vertex's halfedge leaves it in the last triangle using it, or on a boundary.
-// The positions, triangles and uses are taken so that they are freed as soon as the mesh has what
-// it needs of them: the positions become the mesh's points array as they are, without a copy when
-// their capacity is at least mesh_capacity(their count); the triangles go before the mesh's edges
-// are made, and the uses a block at a time as the edges are. The mesh has room for an eighth more
-// of each element (what filling adds), so that adding the first patch does not copy every array
-// into one twice its size.
+// The positions, triangles, marks and uses are taken so that they are freed as soon as the mesh has
+// what it needs of them: the positions become the mesh's points array as they are, without a copy
+// when their capacity is at least mesh_capacity(their count); the triangles go before the mesh's
+// edges are made, and the uses a block at a time as the edges are. The mesh has room for an eighth
+// more of each element (what filling adds), so that adding the first patch does not copy every
+// array into one twice its size.
 Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
-              const std::vector<char>& detached, std::size_t original_vertices, LoadReport& report,
+              std::vector<char> detached, std::size_t original_vertices, LoadReport& report,
               MeshSources* sources, EdgeUses uses = {});
 
 // The capacity assemble gives the mesh's arrays for `count` elements: a reader that knows how

@@ -4,6 +4,8 @@
 #include <cstring>
 #include <string>
 
+#include "huge_pages.h"
+#include "mesh_from_triangles.h"
 #include "readers.h"
 #include "text_scan.h"
 #include "two_parts.h"
@@ -299,7 +301,8 @@ Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report,
   const OffCounts counts = parse_off_header(header, text.size(), path);
   const std::size_t body = header.offset(), header_lines = header.number();
   OffBody reading(counts, path);
-  reading.soup().positions.reserve(counts.vertices);
+  // The room is what the mesh takes the positions with (no copy of them then).
+  reserve_on_huge_pages(reading.soup().positions, mesh_capacity(counts.vertices), counts.vertices);
   const std::size_t split = line_start_after(text, std::max(split_near, body));
   // A vertex's attributes are planned from the first vertex line: read on one thread.
   if (split >= text.size() || counts.normals || counts.colours) {

@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "holefill/triangulate.h"
+#include "huge_pages.h"
 #include "mesh_from_triangles.h"
 #include "soup_attributes.h"
 
@@ -89,8 +90,9 @@ void triangulate_face(const Soup& soup, std::size_t f, std::vector<int>& ks,
 template <class KeyOf, class Hash>
 std::vector<char> repeats(std::size_t count, KeyOf key_of, Hash hash) {
   const int bits = std::bit_width(2 * count + 1);
-  std::vector<std::uint64_t> table(std::size_t{1} << bits, 0);  // hash bits, 1 + index (0: empty)
-  std::vector<char> repeat(count, 0);
+  // hash bits, 1 + index (0: empty)
+  std::vector<std::uint64_t> table = huge_page_vector(std::size_t{1} << bits, std::uint64_t{0});
+  std::vector<char> repeat = huge_page_vector(count, char{0});
   for (std::size_t i = 0; i < count; ++i) {
     const auto key = key_of(i);
     const std::uint64_t mixed = static_cast<std::uint64_t>(hash(key)) * 0x9E3779B97F4A7C15ull;
@@ -165,8 +167,8 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
                                 EdgeUses& uses) {
   const int count = static_cast<int>(triangles.size());
   // Up to three neighbours per triangle, and whether each must take the opposite orientation.
-  std::vector<std::array<int, 3>> neighbour(triangles.size(), {-1, -1, -1});
-  std::vector<NeighbourFlips> links(triangles.size());
+  auto neighbour = huge_page_vector(triangles.size(), std::array<int, 3>{-1, -1, -1});
+  auto links = huge_page_vector(triangles.size(), NeighbourFlips());
   uses.for_each_edge([&](int, std::size_t i, std::size_t j) {
     if (j - i != 2 || uses[i].triangle() == uses[i + 1].triangle()) return;
     const int a = uses[i].triangle(), b = uses[i + 1].triangle();
@@ -176,9 +178,11 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
     neighbour[b][links[b].count()] = a;
     links[b].add(opposite);
   });
-  std::vector<signed char> flip(triangles.size(), -1);
+  // -1 not reached yet; 0 or 1 whether the triangle takes the other orientation than its piece's
+  // first; kTurned once it is flipped (no array of its own at the peak of loading a big mesh).
+  constexpr signed char kTurned = 2;
+  std::vector<signed char> flip = huge_page_vector(triangles.size(), static_cast<signed char>(-1));
   std::vector<int> piece, queue;
-  std::vector<char> turned(triangles.size(), 0);
   std::size_t flipped = 0;
   for (int seed = 0; seed < count; ++seed) {
     if (flip[seed] >= 0) continue;
@@ -203,14 +207,14 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
       if (flip[t] != turn) continue;
       std::swap(triangles[t][1], triangles[t][2]);
       if (!corners.empty()) std::swap(corners[t][1], corners[t][2]);
-      turned[t] = 1;
+      flip[t] = kTurned;
       ++flipped;
     }
   }
   // A flipped triangle runs along each of its edges the other way (the edges stay).
   if (flipped == 0) return 0;
   for (std::size_t k = 0; k < uses.size(); ++k) {
-    if (turned[uses[k].triangle()]) uses[k].reverse();
+    if (flip[uses[k].triangle()] == kTurned) uses[k].reverse();
   }
   return flipped;
 }
@@ -219,7 +223,7 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
 // opposite directions: on each edge the first triangle and the first one after it running the
 // other way stay; later ones (a third sheet on the edge, a fin) are detached.
 std::vector<char> detach_non_manifold(const EdgeUses& uses, std::size_t triangles) {
-  std::vector<char> detached(triangles, 0);
+  std::vector<char> detached = huge_page_vector(triangles, char{0});
   uses.for_each_edge([&](int, std::size_t i, std::size_t j) {
     int kept = 0;
     bool first_forward = false;
@@ -244,7 +248,8 @@ class WedgeFans {
  public:
   WedgeFans(const std::vector<Triangle>& triangles, const EdgeUses& uses,
             const std::vector<char>& detached)
-      : parent_(3 * triangles.size()), open_(3 * triangles.size(), 0) {
+      : parent_(huge_page_vector(3 * triangles.size(), 0)),
+        open_(huge_page_vector(3 * triangles.size(), char{0})) {
     for (std::size_t w = 0; w < parent_.size(); ++w) parent_[w] = static_cast<int>(w);
     auto wedge = [&triangles](int t, int vertex) {
       const auto& c = triangles[t];
@@ -280,8 +285,8 @@ class WedgeFans {
 std::vector<std::pair<int, int>> fans_of_shared_vertices(const std::vector<Triangle>& triangles,
                                                          const std::vector<char>& detached,
                                                          std::size_t vertices, WedgeFans& wedges) {
-  std::vector<int> first_fan(vertices, -1);
-  std::vector<char> several(vertices, 0);
+  std::vector<int> first_fan = huge_page_vector(vertices, -1);
+  std::vector<char> several = huge_page_vector(vertices, char{0});
   const int count = static_cast<int>(triangles.size());
   for (int t = 0; t < count; ++t) {
     if (detached[t]) continue;
@@ -315,7 +320,7 @@ std::size_t split_closed_fans(std::vector<Triangle>& triangles, const EdgeUses& 
   WedgeFans wedges(triangles, uses, detached);
   const auto fans = fans_of_shared_vertices(triangles, detached, positions.size(), wedges);
   if (fans.empty()) return 0;
-  std::vector<char> open_fan(3 * triangles.size(), 0);
+  std::vector<char> open_fan = huge_page_vector(3 * triangles.size(), char{0});
   for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
     for (int c = 0; c < 3; ++c) {
       if (!detached[t] && wedges.open(3 * t + c)) open_fan[wedges.fan(3 * t + c)] = 1;
@@ -383,8 +388,14 @@ Mesh build_mesh(Soup soup, LoadReport& report) {
   std::vector<Triangle> triangles;
   std::vector<Triangle> corners;   // the soup corners of each triangle, when tracked
   std::vector<int> triangle_face;  // the polygon each triangle came from, when tracked
-  triangles.reserve(soup.corners.size() / 3 + soup.face_count());
-  if (track_origins) triangle_face.reserve(triangles.capacity());
+  // Room for any polygons; a polygon of k corners makes k - 2 triangles at most, so a mesh of
+  // triangles fills the first `likely`.
+  const std::size_t room = soup.corners.size() / 3 + soup.face_count();
+  const std::size_t likely =
+      soup.corners.size() - std::min(soup.corners.size(), 2 * soup.face_count());
+  reserve_on_huge_pages(triangles, room, likely);
+  if (track_origins) reserve_on_huge_pages(triangle_face, room, likely);
+  if (track_corners) reserve_on_huge_pages(corners, room, likely);
   std::vector<int> polygon;
   for (std::size_t f = 0; f < soup.face_count(); ++f) {
     triangulate_face(soup, f, polygon, triangles, track_corners ? &corners : nullptr, report);
@@ -402,15 +413,16 @@ Mesh build_mesh(Soup soup, LoadReport& report) {
   const std::size_t original_vertices = positions.size();
   std::vector<int> origin;  // the soup position of each vertex, when tracked
   if (track_origins) {
+    reserve_on_huge_pages(origin, positions.size());
     origin.resize(positions.size());
     std::iota(origin.begin(), origin.end(), 0);
   }
   EdgeUses uses;
-  const std::vector<char> detached =
-      make_consistent(triangles, corners, positions, origin, report, uses);
+  std::vector<char> detached = make_consistent(triangles, corners, positions, origin, report, uses);
   MeshSources sources;
-  Mesh mesh = assemble(std::move(positions), std::move(triangles), detached, original_vertices,
-                       report, track_origins ? &sources : nullptr, std::move(uses));
+  Mesh mesh =
+      assemble(std::move(positions), std::move(triangles), std::move(detached), original_vertices,
+               report, track_origins ? &sources : nullptr, std::move(uses));
   keep_file_format(soup, mesh);
   if (!track_origins) return mesh;
   SoupOrigins origins;
