@@ -5,6 +5,7 @@
 #include <optional>
 #include <utility>
 
+#include "segment_box_tree.h"
 #include "triangle_intersection.h"
 
 namespace holefill::detail {
@@ -100,21 +101,16 @@ std::vector<std::pair<int, int>> chords_through_mesh(const Mesh& mesh,
     triangles.push_back(
         triangle_from({mesh.point(*fv), mesh.point(*++fv), mesh.point(*++fv)}, scale));
   }
-  const FaceGrid grid(std::move(boxes));
+  const SegmentBoxTree tree(std::move(boxes));
   std::vector<std::pair<int, int>> chords;
   for (int i = 0; i < n; ++i) {
     for (int k = i + 2; k < n; ++k) {
       if (i == 0 && k == n - 1) continue;
-      Box segment;
-      segment.add(points[i]);
-      segment.add(points[k]);
-      for (const int o : grid.near(segment)) {
-        if (triangles[o] &&
-            segment_enters_triangle(points[i] * scale, points[k] * scale, *triangles[o])) {
-          chords.emplace_back(i, k);
-          break;
-        }
-      }
+      const bool through = tree.any_along(points[i], points[k], [&](int o) {
+        return triangles[o] &&
+               segment_enters_triangle(points[i] * scale, points[k] * scale, *triangles[o]);
+      });
+      if (through) chords.emplace_back(i, k);
     }
   }
   return chords;
