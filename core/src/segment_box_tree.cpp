@@ -25,7 +25,7 @@ Box grown_for_rounding(Box box) {
   return box;
 }
 
-double centre(const Box& box, int axis) { return 0.5 * box.low[axis] + 0.5 * box.high[axis]; }
+double box_centre(const Box& box, int axis) { return 0.5 * box.low[axis] + 0.5 * box.high[axis]; }
 
 }  // namespace
 
@@ -48,7 +48,7 @@ void SegmentBoxTree::build(int node, int first, int count, int depth) {
   for (int e = first; e < first + count; ++e) {
     const Box& entry = entries_[static_cast<std::size_t>(e)].second;
     box.add(entry);
-    centres.add(Point(centre(entry, 0), centre(entry, 1), centre(entry, 2)));
+    centres.add(Point(box_centre(entry, 0), box_centre(entry, 1), box_centre(entry, 2)));
   }
   nodes_[static_cast<std::size_t>(node)].box = box;
   // A leaf also where the tree would get deeper than the stack of any_along holds.
@@ -66,7 +66,7 @@ void SegmentBoxTree::build(int node, int first, int count, int depth) {
   const int half = count / 2;
   const auto begin = entries_.begin() + first;
   std::nth_element(begin, begin + half, begin + count, [axis](const auto& p, const auto& q) {
-    return centre(p.second, axis) < centre(q.second, axis);
+    return box_centre(p.second, axis) < box_centre(q.second, axis);
   });
   const int children = static_cast<int>(nodes_.size());
   nodes_[static_cast<std::size_t>(node)].first = children;
