@@ -6,6 +6,7 @@
 
 #include "cad_parts.h"
 #include "holefill/fill.h"
+#include "holefill/holes.h"
 #include "holefill/io.h"
 #include "test_meshes.h"
 
@@ -135,6 +136,28 @@ void BM_FillBentSheet(benchmark::State& state) {
                  }));
 }
 
+// A round hole cut from a wavy range(0) x range(0) grid, whose border is a staircase of the grid's
+// triangles: the weight's best plan crosses the steps, so the avoidance forbids the chords through
+// the mesh (chords_through_mesh) and solves again. At range(0) = 100 the hole has about 200
+// edges; the 1,200-edge hole of bench/README.md took minutes before the chords were found
+// along a bounding-box hierarchy.
+void BM_FillStaircaseHole(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const Mesh cut = testing::without_faces(
+      testing::make_grid(
+          n, [](double x, double y) { return 0.05 * std::sin(6 * x) * std::cos(5 * y); }),
+      [](const Point& c) { return std::hypot(c[0] - 0.5, c[1] - 0.5) < 0.3; });
+  auto holes = find_holes(cut);
+  std::erase_if(holes, [](const Hole& hole) {
+    return std::hypot(hole.centroid[0] - 0.5, hole.centroid[1] - 0.5) > 0.05;  // the grid's border
+  });
+  for (auto _ : state) {
+    Mesh mesh = cut;
+    benchmark::DoNotOptimize(fill_holes(mesh, holes, FillOptions{}));
+  }
+  state.counters["edges"] = holes.empty() ? 0.0 : static_cast<double>(holes.front().size());
+}
+
 BENCHMARK(BM_StageTriangulate)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StageRefine)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StageSmooth)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond);
@@ -148,6 +171,7 @@ BENCHMARK(BM_RefineScaling)->Apply(hole_radii);
 BENCHMARK(BM_SmoothScaling)->Apply(hole_radii);
 BENCHMARK(BM_FillAllHoles)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FillBentSheet)->ArgsProduct({{20, 45}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FillStaircaseHole)->Arg(50)->Arg(100)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace holefill::bench
