@@ -4,15 +4,20 @@
 #include <OpenMesh/Tools/Utils/MeshCheckerT.hh>
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <random>
 #include <set>
+#include <stdexcept>
 #include <tuple>
 
 #include "dirty_meshes.h"
 #include "holefill/holes.h"
 #include "io/mesh_from_triangles.h"
+#include "io/readers.h"
+#include "io/soup_to_mesh.h"
+#include "io/two_threads.h"
 #include "test_meshes.h"
 
 namespace holefill::testing {
@@ -306,6 +311,161 @@ TEST(MeshAssembly, EachDirtSoupIsRepairedAsItsDirtRequires) {
   const Mesh fans = load_mesh_from_memory(obj_text(soups[3].soup), "fans.obj", &report);
   EXPECT_EQ(report.vertices_split, 0u);
   EXPECT_EQ(find_holes(fans).size(), 1u);
+}
+
+// Every handle a mesh links, in handle order: each vertex's position and halfedge, each face's
+// halfedge, each halfedge's vertex, face, next and previous halfedge.
+using LinkedHandles = std::tuple<std::vector<Point>, std::vector<int>, std::vector<int>,
+                                 std::vector<std::array<int, 4>>>;
+LinkedHandles linked_handles(const Mesh& mesh) {
+  LinkedHandles all;
+  for (const auto v : mesh.vertices()) {
+    std::get<0>(all).push_back(mesh.point(v));
+    std::get<1>(all).push_back(mesh.halfedge_handle(v).idx());
+  }
+  for (const auto f : mesh.faces()) std::get<2>(all).push_back(mesh.halfedge_handle(f).idx());
+  for (const auto h : mesh.halfedges()) {
+    std::get<3>(all).push_back({mesh.to_vertex_handle(h).idx(), mesh.face_handle(h).idx(),
+                                mesh.next_halfedge_handle(h).idx(),
+                                mesh.prev_halfedge_handle(h).idx()});
+  }
+  return all;
+}
+
+// The mesh the soup read from `bytes` (by `name`'s extension) assembles into, the independent
+// parts on two threads from `two_threads_from` faces on; the report as loading fills it.
+Mesh assembled(const std::string& bytes, const std::string& name, std::size_t two_threads_from,
+               LoadReport& report) {
+  report = LoadReport{};
+  const std::string ext = name.substr(name.rfind('.') + 1);
+  report.format = ext;
+  io::Soup soup = ext == "obj"   ? io::parse_obj(bytes, name, report)
+                  : ext == "off" ? io::parse_off(bytes, name, report)
+                                 : io::parse_ply(bytes, name, report);
+  Mesh mesh = io::build_mesh(std::move(soup), report, two_threads_from);
+  io::add_warnings(report);
+  return mesh;
+}
+
+std::vector<std::size_t> report_counts(const LoadReport& r) {
+  return {r.polygons_triangulated, r.degenerate_faces_dropped,
+          r.faces_detached,        r.vertices_split,
+          r.faces_flipped,         r.duplicate_faces_dropped,
+          r.duplicate_positions,   r.isolated_vertices,
+          r.elements_ignored};
+}
+
+// The dirty soups as an OBJ with a texture coordinate and a normal per corner, materials, groups
+// and smoothing groups changing along the faces, and unused vertices: every attribute the
+// assembly carries to the mesh.
+std::string textured_obj(const Soup& soup) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "mtllib dirty.mtl\n";
+  for (const auto& p : soup.points) {
+    text << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    text << "vt " << p[0] << ' ' << p[1] << '\n';
+    text << "vn " << p[2] << ' ' << p[0] << " 1\n";
+  }
+  text << "v 9 9 9\nv 9 9 9\n";
+  for (std::size_t f = 0; f < soup.faces.size(); ++f) {
+    if (f % 7 == 0) text << "usemtl m" << f % 3 << '\n';
+    if (f % 11 == 0) text << "g part" << f % 4 << '\n';
+    if (f % 13 == 0) text << "s " << f % 2 << '\n';
+    text << 'f';
+    for (const int c : soup.faces[f]) {
+      // Texture coordinates and normals shifted from the vertex, so that a corner's numbers
+      // differ from its vertex's.
+      const std::size_t n = soup.points.size();
+      text << ' ' << c + 1 << '/' << (c + f) % n + 1 << '/' << (c + 2 * f) % n + 1;
+    }
+    text << '\n';
+  }
+  return text.str();
+}
+
+// The dirty soups as an ASCII PLY with a colour per vertex and a value per face.
+std::string ply_with_attributes(const Soup& soup) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "ply\nformat ascii 1.0\nelement vertex " << soup.points.size()
+       << "\nproperty double x\nproperty double y\nproperty double z\nproperty uchar red\n"
+       << "element face " << soup.faces.size()
+       << "\nproperty list uchar int vertex_indices\nproperty float quality\nend_header\n";
+  for (std::size_t v = 0; v < soup.points.size(); ++v) {
+    const auto& p = soup.points[v];
+    text << p[0] << ' ' << p[1] << ' ' << p[2] << ' ' << v % 256 << '\n';
+  }
+  for (std::size_t f = 0; f < soup.faces.size(); ++f) {
+    text << soup.faces[f].size();
+    for (const int c : soup.faces[f]) text << ' ' << c;
+    text << ' ' << 0.5 * static_cast<double>(f) << '\n';
+  }
+  return text.str();
+}
+
+// Two threads assemble the mesh one thread does, handle for handle, with the same attributes
+// (the files written from both) and the same report and warnings: every dirty soup, as a plain
+// OBJ, an OFF, a binary PLY, a textured OBJ and a PLY with attributes, the soups alone and all of
+// them in one (so that each half of the faces holds some of every kind of dirt), with the
+// two-thread threshold lowered to one face.
+TEST(MeshAssembly, TwoThreadsAssembleTheOneThreadMesh) {
+  auto soups = dirty_soups();
+  Soup all;
+  for (const auto& dirty : soups) all = append(all, dirty.soup);
+  soups.push_back({"all dirty soups in one", all});
+  Soup odd = all;
+  odd.faces.pop_back();
+  soups.push_back({"an odd number of faces", odd});
+  for (const auto& [name, soup] : soups) {
+    const std::pair<std::string, std::string> files[] = {
+        {obj_text(soup), "dirty.obj"},
+        {off_text(soup), "dirty.off"},
+        {binary_ply(soup), "dirty.ply"},
+        {textured_obj(soup), "textured.obj"},
+        {ply_with_attributes(soup), "attributes.ply"}};
+    for (const auto& [bytes, file] : files) {
+      SCOPED_TRACE(std::string(name) + ", " + file);
+      LoadReport one_report, two_report;
+      const Mesh one = assembled(bytes, file, std::numeric_limits<std::size_t>::max(), one_report);
+      const Mesh two = assembled(bytes, file, 1, two_report);
+      EXPECT_EQ(linked_handles(one), linked_handles(two));
+      EXPECT_EQ(report_counts(one_report), report_counts(two_report));
+      EXPECT_EQ(one_report.warnings, two_report.warnings);
+      const std::string written = file.substr(file.rfind('.'));
+      EXPECT_EQ(mesh_to_bytes(one, "one" + written), mesh_to_bytes(two, "two" + written));
+    }
+  }
+}
+
+// The first half's error is the one thrown when both halves fail, after both are done; the
+// second's when only it fails; none runs twice.
+TEST(MeshAssembly, TwoThreadsThrowWhatTheOneThreadAssemblyWould) {
+  for (const bool two : {false, true}) {
+    int first_runs = 0, second_runs = 0;
+    EXPECT_THROW(io::run_both(
+                     two, [&] { ++first_runs; },
+                     [&] {
+                       ++second_runs;
+                       throw std::length_error("second");
+                     }),
+                 std::length_error);
+    EXPECT_EQ(first_runs, 1);
+    EXPECT_EQ(second_runs, 1);
+    try {
+      io::run_both(
+          two, [] { throw std::runtime_error("first"); },
+          [&] { throw std::length_error("second"); });
+      ADD_FAILURE() << "nothing thrown";
+    } catch (const std::runtime_error& e) {
+      EXPECT_STREQ(e.what(), "first");
+    }
+    std::vector<int> seen(1001, 0);
+    io::run_in_halves(two, seen.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) ++seen[i];
+    });
+    EXPECT_EQ(seen, std::vector<int>(1001, 1));
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "../mesh_room.h"
 #include "huge_pages.h"
+#include "two_threads.h"
 
 namespace holefill::io {
 // A counting sort by the smaller vertex (stable: triangles in order), then each vertex's uses by
@@ -183,30 +184,52 @@ std::uint8_t rank_of_first_corner(const Triangle& t) {
   return static_cast<std::uint8_t>((t[1] < t[0] ? 1 : 0) + (t[2] < t[0] ? 1 : 0));
 }
 
-// Links each face's three halfedges, chained by add_edges, in its triangle's order: corner c's
+// Links face t's three halfedges, chained by add_edges, in its triangle's order: corner c's
 // halfedge runs from corner c to c + 1, corner 0 being the vertex of rank `first_corner_rank` of
 // the face, and the face's halfedge arrives at corner 0 (as add_face makes it: the face
-// circulators start there). Each vertex gets the halfedge leaving it in the last triangle that
-// uses it, as adding the faces in order would give it.
-void link_faces(Mesh& mesh, const std::vector<std::uint8_t>& first_corner_rank) {
-  for (std::size_t t = 0; t < first_corner_rank.size(); ++t) {
-    const FaceHandle f(static_cast<int>(t));
-    std::array<HalfedgeHandle, 3> h;
-    h[0] = mesh.halfedge_handle(f);
-    h[1] = mesh.next_halfedge_handle(h[0]);
-    h[2] = mesh.next_halfedge_handle(h[1]);
-    std::array<int, 3> from;
-    for (int c = 0; c < 3; ++c) from[c] = mesh.from_vertex_handle(h[c]).idx();
-    std::array<int, 3> by_index = from;
-    std::sort(by_index.begin(), by_index.end());
-    const int first = by_index[first_corner_rank[t]];
-    const auto at = std::find(from.begin(), from.end(), first) - from.begin();
-    std::rotate(h.begin(), h.begin() + at, h.end());
-    if (mesh.from_vertex_handle(h[1]) != mesh.to_vertex_handle(h[0])) std::swap(h[1], h[2]);
-    mesh.set_halfedge_handle(f, h[2]);
-    for (int c = 0; c < 3; ++c) {
-      mesh.set_next_halfedge_handle(h[c], h[(c + 1) % 3]);
-      mesh.set_halfedge_handle(mesh.from_vertex_handle(h[c]), h[c]);
+// circulators start there). Returns the halfedges from corner 0, 1, 2.
+std::array<HalfedgeHandle, 3> link_face(Mesh& mesh, std::size_t t, std::uint8_t first_corner_rank) {
+  const FaceHandle f(static_cast<int>(t));
+  std::array<HalfedgeHandle, 3> h;
+  h[0] = mesh.halfedge_handle(f);
+  h[1] = mesh.next_halfedge_handle(h[0]);
+  h[2] = mesh.next_halfedge_handle(h[1]);
+  std::array<int, 3> from;
+  for (int c = 0; c < 3; ++c) from[c] = mesh.from_vertex_handle(h[c]).idx();
+  std::array<int, 3> by_index = from;
+  std::sort(by_index.begin(), by_index.end());
+  const int first = by_index[first_corner_rank];
+  const auto at = std::find(from.begin(), from.end(), first) - from.begin();
+  std::rotate(h.begin(), h.begin() + at, h.end());
+  if (mesh.from_vertex_handle(h[1]) != mesh.to_vertex_handle(h[0])) std::swap(h[1], h[2]);
+  mesh.set_halfedge_handle(f, h[2]);
+  for (int c = 0; c < 3; ++c) mesh.set_next_halfedge_handle(h[c], h[(c + 1) % 3]);
+  return h;
+}
+
+// Links every face (link_face). Each vertex gets the halfedge leaving it in the last triangle
+// that uses it, as adding the faces in order would give it. On two threads (`two`), each links
+// half of the faces (a face's halfedges are its own), the second half setting its vertices'
+// halfedges as it goes; the first half's vertices are set afterwards, from its last face back,
+// where no later face has set one.
+void link_faces(Mesh& mesh, const std::vector<std::uint8_t>& first_corner_rank, bool two) {
+  const std::size_t count = first_corner_rank.size(), middle = two ? count / 2 : 0;
+  run_both(
+      two,
+      [&] {
+        for (std::size_t t = 0; t < middle; ++t) link_face(mesh, t, first_corner_rank[t]);
+      },
+      [&] {
+        for (std::size_t t = middle; t < count; ++t) {
+          for (const auto h : link_face(mesh, t, first_corner_rank[t])) {
+            mesh.set_halfedge_handle(mesh.from_vertex_handle(h), h);
+          }
+        }
+      });
+  for (std::size_t t = middle; t-- > 0;) {
+    for (const auto h : mesh.fh_range(FaceHandle(static_cast<int>(t)))) {
+      const VertexHandle from = mesh.from_vertex_handle(h);
+      if (!mesh.halfedge_handle(from).is_valid()) mesh.set_halfedge_handle(from, h);
     }
   }
 }
@@ -268,7 +291,7 @@ std::size_t mesh_capacity(std::size_t count) { return with_room(count); }
 // neighbours) are kept, on their own copies of their corners, so no data is lost.
 Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
               std::vector<char> detached, std::size_t original_vertices, LoadReport& report,
-              MeshSources* sources, EdgeUses uses) {
+              MeshSources* sources, EdgeUses uses, std::size_t two_threads_from) {
   if (sources) {
     sources->vertex = identity(positions.size());
     sources->face.clear();
@@ -299,7 +322,7 @@ Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
   }
   mesh.resize(mesh.n_vertices(), 0, first_corner_rank.size());
   add_edges(mesh, std::move(uses), edges);
-  link_faces(mesh, first_corner_rank);
+  link_faces(mesh, first_corner_rank, use_two_threads(mesh.n_faces(), two_threads_from));
   link_boundaries(mesh);
   for (std::size_t v = 0; v < original_vertices; ++v) {
     if (mesh.is_isolated(VertexHandle(static_cast<int>(v)))) ++report.isolated_vertices;

@@ -9,6 +9,7 @@
 
 #include "holefill/io.h"
 #include "huge_pages.h"
+#include "two_threads.h"
 
 namespace holefill::io {
 
@@ -104,10 +105,12 @@ struct MeshSources {
 // when their capacity is at least mesh_capacity(their count); the triangles go before the mesh's
 // edges are made, and the uses a block at a time as the edges are. The mesh has room for an eighth
 // more of each element (what filling adds), so that adding the first patch does not copy every
-// array into one twice its size.
+// array into one twice its size. From `two_threads_from` faces on, independent parts run on two
+// threads (two_threads.h), with the same mesh.
 Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
               std::vector<char> detached, std::size_t original_vertices, LoadReport& report,
-              MeshSources* sources, EdgeUses uses = {});
+              MeshSources* sources, EdgeUses uses = {},
+              std::size_t two_threads_from = kTwoThreadsFrom);
 
 // The capacity assemble gives the mesh's arrays for `count` elements: a reader that knows how
 // many positions it will read reserves this many, so that they become the mesh's without a copy.

@@ -1,23 +1,32 @@
 #include "soup_attributes.h"
 
+#include "two_threads.h"
+
 namespace holefill::io {
 namespace {
 
+// values[origins[i]] for each element i, written into the property's array (each half on its
+// own thread when `two`).
+template <class T>
+void copy_by_origin(const std::vector<T>& values, const std::vector<int>& origins,
+                    std::vector<T>& property, bool two) {
+  run_in_halves(two, property.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) property[i] = values[origins[i]];
+  });
+}
+
 // attributes.h's values: each vertex its source position's, each face its source polygon's.
-void copy_layout_values(const Soup& soup, const SoupOrigins& origins, Mesh& mesh) {
+void copy_layout_values(const Soup& soup, const SoupOrigins& origins, Mesh& mesh, bool two) {
   if (soup.layout.empty()) return;
   set_attribute_layout(mesh, soup.layout);
   for (std::size_t a = 0; a < soup.layout.vertex.size(); ++a) {
     const auto property = vertex_attribute(mesh, soup.layout.vertex[a].name);
-    for (const auto v : mesh.vertices()) {
-      mesh.property(property, v) = soup.vertex_values[a][origins.vertex[v.idx()]];
-    }
+    copy_by_origin(soup.vertex_values[a], origins.vertex, mesh.property(property).data_vector(),
+                   two);
   }
   for (std::size_t a = 0; a < soup.layout.face.size(); ++a) {
     const auto property = face_attribute(mesh, soup.layout.face[a].name);
-    for (const auto f : mesh.faces()) {
-      mesh.property(property, f) = soup.face_values[a][origins.face[f.idx()]];
-    }
+    copy_by_origin(soup.face_values[a], origins.face, mesh.property(property).data_vector(), two);
   }
 }
 
@@ -30,31 +39,34 @@ bool has_obj_values(const Soup& soup) {
 
 // Each halfedge of a face gets the numbers of the soup corner at its end vertex. Written into
 // the properties' arrays, the faces being triangles (through OpenMesh's property and circulator
-// calls this was about a twentieth of loading a textured OBJ).
+// calls this was about a twentieth of loading a textured OBJ). A face's halfedges are its own, so
+// each half of the faces is on its own thread when `two`.
 void copy_corner_numbers(const Soup& soup, const SoupOrigins& origins, const ObjHandles& obj,
-                         Mesh& mesh) {
+                         Mesh& mesh, bool two) {
   std::vector<int>& texcoords = mesh.property(obj.texcoord).data_vector();
   std::vector<int>& normals = mesh.property(obj.normal).data_vector();
-  for (const auto f : mesh.faces()) {
-    const Triangle& corners = origins.face_corners[f.idx()];
-    const Triangle& positions = origins.face_corner_vertices[f.idx()];
-    HalfedgeHandle h = mesh.halfedge_handle(f);
-    for (int side = 0; side < 3; ++side, h = mesh.next_halfedge_handle(h)) {
-      const int position = origins.vertex[mesh.to_vertex_handle(h).idx()];
-      const int c = positions[0] == position ? 0 : positions[1] == position ? 1 : 2;
-      const auto k = static_cast<std::size_t>(corners[c]);
-      const auto at = static_cast<std::size_t>(h.idx());
-      if (!soup.corner_texcoord.empty()) texcoords[at] = soup.corner_texcoord[k];
-      if (!soup.corner_normal.empty()) normals[at] = soup.corner_normal[k];
+  run_in_halves(two, mesh.n_faces(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const Triangle& corners = origins.face_corners[f];
+      const Triangle& positions = origins.face_corner_vertices[f];
+      HalfedgeHandle h = mesh.halfedge_handle(FaceHandle(static_cast<int>(f)));
+      for (int side = 0; side < 3; ++side, h = mesh.next_halfedge_handle(h)) {
+        const int position = origins.vertex[mesh.to_vertex_handle(h).idx()];
+        const int c = positions[0] == position ? 0 : positions[1] == position ? 1 : 2;
+        const auto k = static_cast<std::size_t>(corners[c]);
+        const auto at = static_cast<std::size_t>(h.idx());
+        if (!soup.corner_texcoord.empty()) texcoords[at] = soup.corner_texcoord[k];
+        if (!soup.corner_normal.empty()) normals[at] = soup.corner_normal[k];
+      }
     }
-  }
+  });
 }
 
-void copy_obj_values(const Soup& soup, const SoupOrigins& origins, Mesh& mesh) {
+// The soup's tables are moved to the mesh, which the soup is not read for again.
+void copy_obj_values(Soup& soup, const SoupOrigins& origins, Mesh& mesh, bool two) {
   if (!has_obj_values(soup)) return;
   const ObjHandles obj = add_obj_handles(mesh);
-  mesh.property(obj.tables) = soup.obj;
-  if (has_corner_values(soup)) copy_corner_numbers(soup, origins, obj, mesh);
+  if (has_corner_values(soup)) copy_corner_numbers(soup, origins, obj, mesh, two);
   const std::pair<const std::vector<int>*, OpenMesh::FPropHandleT<int>> per_face[] = {
       {&soup.face_material, obj.material},
       {&soup.face_group, obj.group},
@@ -62,8 +74,9 @@ void copy_obj_values(const Soup& soup, const SoupOrigins& origins, Mesh& mesh) {
       {&soup.face_smoothing, obj.smoothing}};
   for (const auto& [values, property] : per_face) {
     if (values->empty()) continue;
-    for (const auto f : mesh.faces()) mesh.property(property, f) = (*values)[origins.face[f.idx()]];
+    copy_by_origin(*values, origins.face, mesh.property(property).data_vector(), two);
   }
+  mesh.property(obj.tables) = std::move(soup.obj);
 }
 
 }  // namespace
@@ -84,9 +97,9 @@ bool has_corner_values(const Soup& soup) {
 
 bool has_attributes(const Soup& soup) { return !soup.layout.empty() || has_obj_values(soup); }
 
-void copy_soup_attributes(const Soup& soup, const SoupOrigins& origins, Mesh& mesh) {
-  copy_layout_values(soup, origins, mesh);
-  copy_obj_values(soup, origins, mesh);
+void copy_soup_attributes(Soup& soup, const SoupOrigins& origins, Mesh& mesh, bool two) {
+  copy_layout_values(soup, origins, mesh, two);
+  copy_obj_values(soup, origins, mesh, two);
 }
 
 }  // namespace holefill::io

@@ -31,7 +31,8 @@ bool has_attributes(const Soup& soup);
 // properties is written back as it was read (binary stays binary, floats stay floats).
 void keep_file_format(const Soup& soup, Mesh& mesh);
 
-// Copies the soup's attributes to the mesh's elements (nothing when it carries none).
-void copy_soup_attributes(const Soup& soup, const SoupOrigins& origins, Mesh& mesh);
+// Copies the soup's attributes to the mesh's elements (nothing when it carries none), each half
+// of the elements on its own thread when `two`; the soup's OBJ tables are moved to the mesh.
+void copy_soup_attributes(Soup& soup, const SoupOrigins& origins, Mesh& mesh, bool two);
 
 }  // namespace holefill::io

@@ -9,6 +9,8 @@
 #include "huge_pages.h"
 #include "mesh_from_triangles.h"
 #include "soup_attributes.h"
+#include "two_parts.h"
+#include "two_threads.h"
 
 namespace holefill::io {
 namespace fs = std::filesystem;
@@ -378,37 +380,122 @@ std::vector<char> make_consistent(std::vector<Triangle>& triangles, std::vector<
   return detached;
 }
 
+// The soup's polygons as triangles (by soup position), with, when tracked, the soup corners each
+// was made of and the polygon each came from.
+struct Triangulation {
+  std::vector<Triangle> triangles;
+  std::vector<Triangle> corners;  // when tracked
+  std::vector<int> face;          // when tracked
+};
+
+// Triangulates the soup's faces [begin, end) onto the end of `into`, counting in `report`.
+void triangulate_faces(const Soup& soup, std::size_t begin, std::size_t end, bool track_origins,
+                       bool track_corners, Triangulation& into, LoadReport& report) {
+  std::vector<int> polygon;  // the polygon's soup corners, one allocation for all faces
+  for (std::size_t f = begin; f < end; ++f) {
+    triangulate_face(soup, f, polygon, into.triangles, track_corners ? &into.corners : nullptr,
+                     report);
+    if (track_origins) into.face.resize(into.triangles.size(), static_cast<int>(f));
+  }
+}
+
+// Gives `into` room for the triangles of the soup's faces [begin, end): a polygon of k corners
+// makes k - 2 triangles at most, so a mesh of triangles fills the first `likely` (the room allows
+// for any polygons).
+void reserve_triangles(const Soup& soup, std::size_t begin, std::size_t end, bool track_origins,
+                       bool track_corners, Triangulation& into) {
+  const std::size_t faces = end - begin;
+  const std::size_t corners = begin == end ? 0 : soup.face_end[end - 1] - soup.face_begin(begin);
+  const std::size_t room = corners / 3 + faces;
+  const std::size_t likely = corners - std::min(corners, 2 * faces);
+  reserve_on_huge_pages(into.triangles, room, likely);
+  if (track_origins) reserve_on_huge_pages(into.face, room, likely);
+  if (track_corners) reserve_on_huge_pages(into.corners, room, likely);
+}
+
+// The soup's polygons as triangles, in the order of the faces; on two threads (`two`), each
+// triangulates half of the faces, and the second half's triangles follow the first's.
+Triangulation triangulate_soup(const Soup& soup, bool track_origins, bool track_corners, bool two,
+                               LoadReport& report) {
+  Triangulation first, second;
+  const std::size_t faces = soup.face_count(), middle = two ? faces / 2 : faces;
+  reserve_triangles(soup, 0, faces, track_origins, track_corners, first);
+  LoadReport second_report;
+  run_both(
+      two, [&] { triangulate_faces(soup, 0, middle, track_origins, track_corners, first, report); },
+      [&] {
+        if (middle == faces) return;
+        reserve_triangles(soup, middle, faces, track_origins, track_corners, second);
+        triangulate_faces(soup, middle, faces, track_origins, track_corners, second, second_report);
+      });
+  report.polygons_triangulated += second_report.polygons_triangulated;
+  report.degenerate_faces_dropped += second_report.degenerate_faces_dropped;
+  append_and_free(first.triangles, second.triangles);
+  append_and_free(first.corners, second.corners);
+  append_and_free(first.face, second.face);
+  return first;
+}
+
+// Where the mesh's elements came from in the soup (soup_attributes.h), from where they came from
+// in the triangles (`sources`), each triangle's polygon and corners, and each vertex's soup
+// position (`origin`). Each half of the vertices and faces on its own thread when `two`.
+SoupOrigins origins_of(const Mesh& mesh, const MeshSources& sources,
+                       const Triangulation& triangulation, const std::vector<int>& origin,
+                       bool track_corners, bool two) {
+  SoupOrigins origins;
+  origins.vertex.resize(sources.vertex.size());
+  origins.face.resize(sources.face.size());
+  if (track_corners) {
+    origins.face_corners.resize(sources.face.size());
+    origins.face_corner_vertices.resize(sources.face.size());
+  }
+  run_in_halves(two, sources.vertex.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) origins.vertex[v] = origin[sources.vertex[v]];
+  });
+  run_in_halves(two, sources.face.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const int t = sources.face[f];
+      origins.face[f] = triangulation.face[t];
+      if (!track_corners) continue;
+      origins.face_corners[f] = triangulation.corners[t];
+      // The face's corners in its triangle's order (the circulator starts at the first), each the
+      // vertex it was made from, then that vertex's soup position.
+      Triangle& c = origins.face_corner_vertices[f];
+      int k = 0;
+      for (const auto v : mesh.fv_range(FaceHandle(static_cast<int>(f)))) {
+        c[k++] = origin[sources.vertex[v.idx()]];
+      }
+    }
+  });
+  return origins;
+}
+
 }  // namespace
 
 // Where each triangle and vertex came from is followed only when the soup carries attributes to
 // copy: on a big mesh with none, those arrays were a tenth of the peak.
-Mesh build_mesh(Soup soup, LoadReport& report) {
+Mesh build_mesh(Soup soup, LoadReport& report, std::size_t two_threads_from) {
   const bool track_origins = has_attributes(soup);
   const bool track_corners = has_corner_values(soup);
-  std::vector<Triangle> triangles;
-  std::vector<Triangle> corners;   // the soup corners of each triangle, when tracked
-  std::vector<int> triangle_face;  // the polygon each triangle came from, when tracked
-  // Room for any polygons; a polygon of k corners makes k - 2 triangles at most, so a mesh of
-  // triangles fills the first `likely`.
-  const std::size_t room = soup.corners.size() / 3 + soup.face_count();
-  const std::size_t likely =
-      soup.corners.size() - std::min(soup.corners.size(), 2 * soup.face_count());
-  reserve_on_huge_pages(triangles, room, likely);
-  if (track_origins) reserve_on_huge_pages(triangle_face, room, likely);
-  if (track_corners) reserve_on_huge_pages(corners, room, likely);
-  std::vector<int> polygon;
-  for (std::size_t f = 0; f < soup.face_count(); ++f) {
-    triangulate_face(soup, f, polygon, triangles, track_corners ? &corners : nullptr, report);
-    if (track_origins) triangle_face.resize(triangles.size(), static_cast<int>(f));
-  }
+  const bool two = use_two_threads(soup.face_count(), two_threads_from);
+  Triangulation triangulation = triangulate_soup(soup, track_origins, track_corners, two, report);
   // The polygons are triangles now.
   std::vector<int>().swap(soup.corners);
   std::vector<std::size_t>().swap(soup.face_end);
   std::vector<std::size_t>().swap(soup.face_line);
-  report.duplicate_faces_dropped = drop_duplicate_triangles(triangles, triangle_face, corners);
-  if (report.format != "stl") {
-    report.duplicate_positions = count_duplicate_positions(soup.positions);
-  }
+  // Duplicate faces and duplicate positions, one beside the other.
+  const bool count_positions = report.format != "stl";
+  std::size_t duplicate_positions = 0;
+  run_both(
+      two,
+      [&] {
+        report.duplicate_faces_dropped = drop_duplicate_triangles(
+            triangulation.triangles, triangulation.face, triangulation.corners);
+      },
+      [&] {
+        if (count_positions) duplicate_positions = count_duplicate_positions(soup.positions);
+      });
+  report.duplicate_positions = duplicate_positions;
   std::vector<Point> positions = std::move(soup.positions);
   const std::size_t original_vertices = positions.size();
   std::vector<int> origin;  // the soup position of each vertex, when tracked
@@ -418,32 +505,16 @@ Mesh build_mesh(Soup soup, LoadReport& report) {
     std::iota(origin.begin(), origin.end(), 0);
   }
   EdgeUses uses;
-  std::vector<char> detached = make_consistent(triangles, corners, positions, origin, report, uses);
+  std::vector<char> detached = make_consistent(triangulation.triangles, triangulation.corners,
+                                               positions, origin, report, uses);
   MeshSources sources;
-  Mesh mesh =
-      assemble(std::move(positions), std::move(triangles), std::move(detached), original_vertices,
-               report, track_origins ? &sources : nullptr, std::move(uses));
+  Mesh mesh = assemble(std::move(positions), std::move(triangulation.triangles),
+                       std::move(detached), original_vertices, report,
+                       track_origins ? &sources : nullptr, std::move(uses), two_threads_from);
   keep_file_format(soup, mesh);
   if (!track_origins) return mesh;
-  SoupOrigins origins;
-  origins.vertex.reserve(sources.vertex.size());
-  for (const int v : sources.vertex) origins.vertex.push_back(origin[v]);
-  origins.face.reserve(sources.face.size());
-  for (std::size_t f = 0; f < sources.face.size(); ++f) {
-    const int t = sources.face[f];
-    origins.face.push_back(triangle_face[t]);
-    if (!track_corners) continue;
-    origins.face_corners.push_back(corners[t]);
-    // The face's corners in its triangle's order (the circulator starts at the first), each the
-    // vertex it was made from, then that vertex's soup position.
-    Triangle c;
-    int k = 0;
-    for (const auto v : mesh.fv_range(FaceHandle(static_cast<int>(f)))) {
-      c[k++] = origin[sources.vertex[v.idx()]];
-    }
-    origins.face_corner_vertices.push_back(c);
-  }
-  copy_soup_attributes(soup, origins, mesh);
+  const SoupOrigins origins = origins_of(mesh, sources, triangulation, origin, track_corners, two);
+  copy_soup_attributes(soup, origins, mesh, two);
   return mesh;
 }
 
