@@ -4,7 +4,6 @@
 #include <cstring>
 #include <string>
 
-#include "huge_pages.h"
 #include "mesh_from_triangles.h"
 #include "readers.h"
 #include "text_scan.h"
@@ -302,7 +301,7 @@ Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report,
   const std::size_t body = header.offset(), header_lines = header.number();
   OffBody reading(counts, path);
   // The room is what the mesh takes the positions with (no copy of them then).
-  reserve_on_huge_pages(reading.soup().positions, mesh_capacity(counts.vertices), counts.vertices);
+  reading.soup().positions.reserve(mesh_capacity(counts.vertices));
   const std::size_t split = line_start_after(text, std::max(split_near, body));
   // A vertex's attributes are planned from the first vertex line: read on one thread.
   if (split >= text.size() || counts.normals || counts.colours) {
