@@ -110,9 +110,9 @@ struct Tables {
 // best (try_apex). The values computed are the same either way, so the result is the plain
 // loop's (kPrune = false), and tests check it.
 template <bool kPrune, class Weight>
-class RowSolver {
+class StripSolver {
  public:
-  RowSolver(const HolePolygon& polygon, const Weight& weight, Tables& tables)
+  StripSolver(const HolePolygon& polygon, const Weight& weight, Tables& tables)
       : polygon_(polygon), weight_(weight), t_(tables), first_within_bound_(fastest_bound_scan()) {}
 
   // Rows lowest ... highest (highest <= n - 3), column by column: cells (r, k) for r + 2 <= k,
@@ -273,12 +273,12 @@ std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weig
   Tables tables(polygon, Weight::kUsesDihedral);
   const int n = tables.n;
   RowWavefront wavefront(n);
-  std::vector<RowSolver<kPrune, Weight>> solvers(
-      static_cast<std::size_t>(threads), RowSolver<kPrune, Weight>(polygon, weight, tables));
+  std::vector<StripSolver<kPrune, Weight>> solvers(
+      static_cast<std::size_t>(threads), StripSolver<kPrune, Weight>(polygon, weight, tables));
   std::atomic<int> next_strip{0};  // counted from the bottom
   // A cancel stops the taking of strips; a strip once taken is finished, since the strips above
   // it that were taken before the cancel wait for it.
-  auto solve_strips = [&](RowSolver<kPrune, Weight>& solver) {
+  auto solve_strips = [&](StripSolver<kPrune, Weight>& solver) {
     while (!cancelled(options)) {
       const int highest = n - 3 - kStripRows * next_strip++;
       if (highest < 0) break;
