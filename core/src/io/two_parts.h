@@ -8,11 +8,10 @@
 
 #include <cstring>
 #include <string_view>
-#include <system_error>
-#include <thread>
 #include <vector>
 
 #include "soup.h"
+#include "two_threads.h"
 
 namespace holefill::io {
 
@@ -29,31 +28,20 @@ inline std::size_t line_start_after(std::string_view text, std::size_t near) {
                : text.size();
 }
 
-// Runs `read_second` on a thread of its own and `read_first` here. What read_first throws is
-// thrown (once the thread is done); what read_second throws is dropped, as the part is read
-// again after the first. Returns whether read_second finished (false too when no thread could
-// be had: then it was not run).
+// Runs `read_second` on a thread of its own (run_both; here after read_first when no thread can
+// be had) and `read_first` here. What read_first throws is thrown (once the thread is done); what
+// read_second throws is dropped, as the part is read again after the first. Returns whether
+// read_second finished.
 template <class ReadFirst, class ReadSecond>
 bool read_in_two_parts(ReadFirst&& read_first, ReadSecond&& read_second) {
   bool second_read = false;
-  std::thread thread;
-  try {
-    thread = std::thread([&] {
-      try {
-        read_second();
-        second_read = true;
-      } catch (...) {  // read again after the first, where the first part's errors come first
-      }
-    });
-  } catch (const std::system_error&) {  // no thread to be had: one after the other
-  }
-  try {
-    read_first();
-  } catch (...) {
-    if (thread.joinable()) thread.join();
-    throw;
-  }
-  if (thread.joinable()) thread.join();
+  run_both(true, read_first, [&] {
+    try {
+      read_second();
+      second_read = true;
+    } catch (...) {  // read again after the first, where the first part's errors come first
+    }
+  });
   return second_read;
 }
 

@@ -1,5 +1,6 @@
-// The assembly of a big mesh (soup_to_mesh, mesh_from_triangles, soup_attributes) runs its
-// independent parts on two threads. Each part writes only what is its own (its half of an array,
+// Two pieces of work on two threads: the two parts of a big text file (two_parts.h), and the
+// independent parts of a big mesh's assembly (soup_to_mesh, mesh_from_triangles,
+// soup_attributes). In the assembly, each part writes only what is its own (its half of an array,
 // its own counters), and what depends on order is put back in order, so the mesh, the report and
 // every message are the one-thread assembly's.
 #pragma once
