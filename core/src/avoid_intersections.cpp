@@ -88,6 +88,10 @@ PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
   for (const WeightKind weight : weights_in_order(options.weight)) {
     TriangulateOptions with = options;
     with.weight = weight;
+    // Holes large enough for the restricted search keep to it in these rounds, or a 2,400-edge
+    // hole would pay the full search's ten seconds a round (the plan may have come from the full
+    // search, where the restricted one folded or found nothing).
+    with.restricted.full_search_fallback = false;
     const int rounds = weight == options.weight ? kRoundsWithChosenWeight : kRoundsWithOtherWeight;
     for (int round = 0; round < rounds; ++round) {
       forbid(current, found, forbidden);

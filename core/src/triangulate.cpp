@@ -97,6 +97,15 @@ TriangulationQuality evaluate_triangulation(const HolePolygon& polygon,
   return q;
 }
 
+namespace {
+
+// Whether a restricted search's triangulation of this quality is worth a full search's time.
+bool folds(const TriangulationQuality& quality, const RestrictedSearch& search) {
+  return quality.degenerate > 0 || quality.max_dihedral > search.full_search_above_dihedral;
+}
+
+}  // namespace
+
 std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polygon,
                                                         const TriangulateOptions& options) {
   if (polygon.points.size() < 3 || polygon.points.size() >= kMaxPolygonSize) return std::nullopt;
@@ -104,11 +113,17 @@ std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polyg
     return triangulate_polygon(detail::canonical(polygon), options);
   }
   const std::size_t threshold = options.restricted.above_edges;
-  if (threshold > 0 && polygon.points.size() > threshold) {
-    if (auto restricted = triangulate_polygon_restricted(polygon, options)) return restricted;
+  const bool above_threshold = threshold > 0 && polygon.points.size() > threshold;
+  const bool full_search_allowed = polygon.points.size() <= kMaxFullSearchEdges &&
+                                   (!above_threshold || options.restricted.full_search_fallback);
+  if (above_threshold) {
+    auto restricted = triangulate_polygon_restricted(polygon, options);
+    if (restricted && !(full_search_allowed && folds(restricted->quality, options.restricted))) {
+      return restricted;
+    }
     if (detail::cancelled(options)) return std::nullopt;
   }
-  if (polygon.points.size() > kMaxFullSearchEdges) return std::nullopt;
+  if (!full_search_allowed) return std::nullopt;
   return detail::full_search(polygon, options);
 }
 

@@ -327,6 +327,9 @@ TEST(RestrictedSearch, LargeHolesUseItAndSmallOnesDoNot) {
   const HolePolygon polygon = random_hole(120, rng);
   TriangulateOptions options{WeightKind::Liepa};
   options.restricted.above_edges = 100;  // 120 edges: restricted
+  // A random polygon folds in places whatever the chords; the fallback to the full search on a
+  // fold is tests/robust/large_hole_test.cpp's.
+  options.restricted.full_search_above_dihedral = M_PI;
   const auto through_threshold = triangulate_polygon(polygon, options);
   const auto restricted = triangulate_polygon_restricted(polygon, options);
   ASSERT_TRUE(through_threshold && restricted);

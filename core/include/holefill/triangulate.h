@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +39,15 @@ struct RestrictedSearch {
   std::size_t above_edges = 800;  // holes with more boundary edges use it; 0: never
   int pocket_edges = 48;
   int nearest_neighbours = 16;
+  // Its triangulation is replaced by the full search's (never worse by the weight) when it has a
+  // degenerate triangle or a dihedral angle above this (radians) and the polygon has at most
+  // kMaxFullSearchEdges points: its chords follow the boundary, and along a long boundary with
+  // steps (a hole cut from a scan's grid) every triangulation they hold folds over the steps.
+  // pi or more: never.
+  double full_search_above_dihedral = M_PI / 2;
+  // false: the restricted search's answer stands, even when it finds nothing (the full search's
+  // time grows with the cube of the edge count: ten seconds at 2,400 edges).
+  bool full_search_fallback = true;
   bool operator==(const RestrictedSearch&) const = default;
 };
 
@@ -91,8 +101,9 @@ struct PlannedTriangulation {
 // The optimal triangulation under options.weight, or nothing when the forbidden chords leave no
 // valid triangulation. The polygon needs at least 3 and fewer than kMaxPolygonSize points.
 // Polygons above options.restricted.above_edges go through the restricted search first (see
-// RestrictedSearch), and through the full one only when it finds nothing and the polygon has at
-// most kMaxFullSearchEdges points.
+// RestrictedSearch), and through the full one when it finds nothing or a triangulation with a
+// degenerate triangle or a fold (RestrictedSearch::full_search_above_dihedral), the polygon has
+// at most kMaxFullSearchEdges points and RestrictedSearch::full_search_fallback allows it.
 std::optional<PolygonTriangulation> triangulate_polygon(const HolePolygon& polygon,
                                                         const TriangulateOptions& options);
 
