@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "io/mesh_from_triangles.h"
 #include "io/readers.h"
 #include "robust_test_util.h"
 
@@ -173,6 +174,29 @@ TEST(OffParts, ErrorsOnEitherSideAreOneReadingsMessages) {
   // Truncated in the vertices, in the faces.
   expect_same_off_at_every_cut(vertices + "1 1 0\n");
   expect_same_off_at_every_cut(vertices + more + "3 1 3 2\n3 0 1 3\n");
+}
+
+// The OFF reader gives its arrays the room of the counted records from the start (each growing
+// past its room copied it into one twice its size), whole or in two parts, whose second part is
+// then appended without a copy.
+TEST(OffParts, ArraysHaveTheRoomOfTheCountedRecords) {
+  constexpr int kVertices = 300, kFaces = 1001;  // neither a power of two
+  std::string text = "OFF\n" + std::to_string(kVertices) + ' ' + std::to_string(kFaces) + " 0\n";
+  for (int v = 0; v < kVertices; ++v)
+    text += std::to_string(v) + " 0.5 " + std::to_string(v % 7) + '\n';
+  for (int f = 0; f < kFaces; ++f) {
+    text += "3 " + std::to_string(f % 298) + ' ' + std::to_string(f % 298 + 1) + ' ' +
+            std::to_string(f % 298 + 2) + '\n';
+  }
+  for (const std::size_t split_near : {std::string::npos, text.size() / 4, text.size() / 2}) {
+    LoadReport report;
+    const io::Soup soup = io::parse_off(text, "/data/room.off", report, split_near);
+    ASSERT_EQ(soup.face_count(), std::size_t{kFaces});
+    EXPECT_EQ(soup.positions.capacity(), io::mesh_capacity(kVertices)) << split_near;
+    EXPECT_EQ(soup.corners.capacity(), std::size_t{3 * kFaces}) << split_near;
+    EXPECT_EQ(soup.face_end.capacity(), std::size_t{kFaces}) << split_near;
+    EXPECT_EQ(soup.face_line.capacity(), std::size_t{kFaces}) << split_near;
+  }
 }
 
 void expect_same_ply_at_every_cut(const std::string& text) {

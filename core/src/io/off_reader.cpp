@@ -159,6 +159,13 @@ class OffBody {
  public:
   OffBody(const OffCounts& counts, const fs::path& path) : counts_(counts), path_(path) {}
 
+  // Gives the soup room for the records from `first` on, which `bytes` bytes of the file hold:
+  // the positions with the mesh's room when `first` is 0 (the mesh then takes them without a
+  // copy), the faces as triangles (most files' faces; each corner takes a byte at least), so that
+  // the arrays are not copied into twice their size as they grow, nor when a second part is
+  // appended.
+  void reserve(unsigned long long first, std::size_t bytes);
+
   // Reads the records of `text`, which follows `lines_before` lines of the file and starts at
   // record `first`. A file that ends before the counted records is refused only when `last`
   // (else `text` is a first part, and the rest follows).
@@ -171,7 +178,6 @@ class OffBody {
   // The soup, with the warnings for what was not kept.
   Soup finish(LoadReport& report);
 
-  Soup& soup() { return soup_; }
   // Where the text read last ends: records and lines before it.
   unsigned long long records() const { return record_; }
   std::size_t lines() const { return lines_; }
@@ -187,6 +193,16 @@ class OffBody {
   std::size_t lines_ = 0;
   std::size_t faces_with_colours_ = 0, extra_lines_ = 0;
 };
+
+void OffBody::reserve(unsigned long long first, std::size_t bytes) {
+  const unsigned long long vertices = counts_.vertices - std::min(first, counts_.vertices);
+  const unsigned long long faces_before = first - std::min(first, counts_.vertices);
+  const unsigned long long faces = counts_.faces - std::min(faces_before, counts_.faces);
+  soup_.positions.reserve(first == 0 ? mesh_capacity(vertices) : vertices);
+  soup_.corners.reserve(std::min<unsigned long long>(3 * faces, bytes));
+  soup_.face_end.reserve(faces);
+  soup_.face_line.reserve(faces);
+}
 
 void OffBody::read(std::string_view text, std::size_t lines_before, unsigned long long first,
                    bool last) {
@@ -300,8 +316,7 @@ Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report,
   const OffCounts counts = parse_off_header(header, text.size(), path);
   const std::size_t body = header.offset(), header_lines = header.number();
   OffBody reading(counts, path);
-  // The room is what the mesh takes the positions with (no copy of them then).
-  reading.soup().positions.reserve(mesh_capacity(counts.vertices));
+  reading.reserve(0, text.size() - body);
   const std::size_t split = line_start_after(text, std::max(split_near, body));
   // A vertex's attributes are planned from the first vertex line: read on one thread.
   if (split >= text.size() || counts.normals || counts.colours) {
@@ -317,6 +332,7 @@ Soup parse_off(std::string_view text, const fs::path& path, LoadReport& report,
                           ContentLines lines(first, '#');
                           unsigned long long records = 0;
                           for (std::string_view line; lines.next(line);) ++records;
+                          later.reserve(records, second.size());
                           later.read(second, header_lines + lines.number(), records, true);
                         });
   if (!later_read || !reading.append(later)) {
