@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "io/mesh_from_triangles.h"
+#include "io/obj_estimate.h"
 #include "io/readers.h"
 #include "robust_test_util.h"
 
@@ -196,6 +197,84 @@ TEST(OffParts, ArraysHaveTheRoomOfTheCountedRecords) {
     EXPECT_EQ(soup.corners.capacity(), std::size_t{3 * kFaces}) << split_near;
     EXPECT_EQ(soup.face_end.capacity(), std::size_t{kFaces}) << split_near;
     EXPECT_EQ(soup.face_line.capacity(), std::size_t{kFaces}) << split_near;
+  }
+}
+
+// A textured grid of side x side vertices (v, vt and vn each), a group and a material, and its
+// faces by v/vt/vn: 3 MB at side 150, enough to be sampled (obj_estimate.h).
+std::string textured_grid_obj(int side) {
+  std::string text = "mtllib grid.mtl\n";
+  for (int i = 0; i < side; ++i) {
+    for (int j = 0; j < side; ++j) {
+      const std::string x = std::to_string(i * 0.01), y = std::to_string(j * 0.01);
+      text += "v " + x + ' ' + y + " 0.5\nvt " + x + ' ' + y + "\nvn 0 0 1\n";
+    }
+  }
+  text += "g grid\nusemtl ground\n";
+  auto corner = [](int v) {
+    return ' ' + std::to_string(v) + '/' + std::to_string(v) + '/' + std::to_string(v);
+  };
+  for (int i = 0; i + 1 < side; ++i) {
+    for (int j = 0; j + 1 < side; ++j) {
+      const int a = i * side + j + 1, b = a + 1, c = a + side, d = c + 1;
+      text += 'f' + corner(a) + corner(b) + corner(d) + "\nf" + corner(a) + corner(d) + corner(c) +
+              '\n';
+    }
+  }
+  return text;
+}
+
+TEST(ObjEstimate, SamplesGiveTheCountsWithAMarginOrNothingForASmallText) {
+  constexpr int kSide = 150;
+  const std::string text = textured_grid_obj(kSide);
+  ASSERT_GE(text.size(), io::kEstimateObjFrom);
+  const io::ObjCounts counts = io::estimate_obj_counts(text);
+  const std::size_t vertices = kSide * kSide, faces = 2 * (kSide - 1) * (kSide - 1);
+  for (const auto& [estimate, actual] :
+       {std::pair{counts.vertices, vertices}, std::pair{counts.texcoords, vertices},
+        std::pair{counts.normals, vertices}, std::pair{counts.faces, faces},
+        std::pair{counts.corners, 3 * faces}}) {
+    EXPECT_GE(estimate, actual);
+    EXPECT_LE(estimate, actual + actual / 4);
+  }
+  EXPECT_TRUE(counts.slashed_corners);
+  // The second half holds faces only.
+  const io::ObjCounts later =
+      io::estimate_obj_counts(std::string_view(text).substr(text.size() / 2));
+  EXPECT_EQ(later.vertices, 0u);
+  EXPECT_GT(later.faces, 0u);
+  EXPECT_GE(later.corners, 3 * later.faces - later.faces / 8);
+  const io::ObjCounts small = io::estimate_obj_counts(text.substr(0, io::kEstimateObjFrom - 1));
+  EXPECT_EQ(small.vertices + small.faces + small.corners, 0u);
+  // A text of shortest statements is bounded by its size.
+  std::string shortest;
+  while (shortest.size() < 2 * io::kEstimateObjFrom) shortest += "v 0 0 0\nf 1\n";
+  const io::ObjCounts bounded = io::estimate_obj_counts(shortest);
+  EXPECT_LE(bounded.vertices, shortest.size() / 8);
+  EXPECT_LE(bounded.faces, shortest.size() / 4);
+}
+
+// The OBJ reader gives its arrays the room of the estimate from the start (each growing past its
+// room was copied into one twice its size), whole or in two parts, whose second part is then
+// appended without a copy; and reads what it read without.
+TEST(ObjParts, ArraysHaveTheRoomOfTheEstimate) {
+  const std::string text = textured_grid_obj(150);
+  const io::ObjCounts counts = io::estimate_obj_counts(text);
+  const std::string whole = read_whole_or_cut(text, std::string::npos);
+  for (const std::size_t split_near : {std::string::npos, text.size() / 3, text.size() / 2}) {
+    LoadReport report;
+    const io::Soup soup = io::parse_obj(text, "/data/room.obj", report, split_near);
+    EXPECT_EQ(soup.positions.capacity(), io::mesh_capacity(counts.vertices)) << split_near;
+    EXPECT_EQ(soup.obj.texcoords.capacity(), counts.texcoords) << split_near;
+    EXPECT_EQ(soup.obj.normals.capacity(), counts.normals) << split_near;
+    EXPECT_EQ(soup.corners.capacity(), counts.corners) << split_near;
+    EXPECT_EQ(soup.corner_texcoord.capacity(), counts.corners) << split_near;
+    EXPECT_EQ(soup.corner_normal.capacity(), counts.corners) << split_near;
+    EXPECT_EQ(soup.face_end.capacity(), counts.faces) << split_near;
+    EXPECT_EQ(soup.face_line.capacity(), counts.faces) << split_near;
+    EXPECT_EQ(soup.face_material.capacity(), counts.faces) << split_near;
+    EXPECT_EQ(soup.face_group.capacity(), counts.faces) << split_near;
+    EXPECT_EQ(read_whole_or_cut(text, split_near), whole);
   }
 }
 

@@ -96,7 +96,8 @@ void ObjReading::read(std::string_view text) {
   for (const auto& [keyword, count] : statements.not_kept()) not_kept_[keyword] += count;
 }
 
-void ObjReading::FaceNames::append(const FaceNames& later, std::size_t own, std::size_t count) {
+void ObjReading::FaceNames::append(const FaceNames& later, std::size_t own, std::size_t count,
+                                   std::size_t room) {
   std::vector<int> number_of(later.names.size() + 1, 0);  // later's numbers as this one's
   for (std::size_t k = 0; k < later.names.size(); ++k) number_of[k + 1] = number(later.names[k]);
   auto ours = [&](int value) { return value == kInherited ? current : number_of[value]; };
@@ -106,6 +107,7 @@ void ObjReading::FaceNames::append(const FaceNames& later, std::size_t own, std:
                     std::all_of(later.faces.begin(), later.faces.end(),
                                 [&](int value) { return ours(value) == 0; });
   if (!none) {
+    if (faces.empty()) faces.reserve(std::max(room, own + count));
     faces.resize(own, 0);
     faces.resize(own + inheriting, current);
     for (const int value : later.faces) faces.push_back(ours(value));
@@ -144,7 +146,9 @@ bool ObjReading::append(ObjReading& second) {
   }
   FaceNames ObjReading::*const per_face[] = {&ObjReading::material_, &ObjReading::group_,
                                              &ObjReading::object_, &ObjReading::smoothing_};
-  for (const auto names : per_face) (this->*names).append(second.*names, faces, later.face_count());
+  for (const auto names : per_face) {
+    (this->*names).append(second.*names, faces, later.face_count(), soup_.face_end.capacity());
+  }
   ObjTables& tables = soup_.obj;
   if (!later.obj.texcoords.empty()) {
     tables.texcoord_size = tables.texcoords.empty()
@@ -171,14 +175,23 @@ Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report,
   ObjReading reading(path, false);
   const std::size_t split = split_point(text, split_near);
   if (split >= text.size()) {
+    reading.reserve(estimate_obj_counts(text));
     reading.read(text);
     return reading.finish(report);
   }
   // The second half on a thread of its own, the first here; then the second is appended, or
   // read again after the first where it could not be read alone.
   ObjReading second(path, true);
-  const bool second_read = read_in_two_parts([&] { reading.read(text.substr(0, split)); },
-                                             [&] { second.read(text.substr(split)); });
+  // The first reading's arrays have the room of the whole text, where the second is appended.
+  const bool second_read = read_in_two_parts(
+      [&] {
+        reading.reserve(estimate_obj_counts(text));
+        reading.read(text.substr(0, split));
+      },
+      [&] {
+        second.reserve(estimate_obj_counts(text.substr(split)));
+        second.read(text.substr(split));
+      });
   if (!second_read || !reading.append(second)) reading.read(text.substr(split));
   return reading.finish(report);
 }

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "mesh_from_triangles.h"
 #include "text_scan.h"
 
 namespace holefill::io {
@@ -119,6 +120,19 @@ ObjReading::ObjReading(const fs::path& path, bool detached) : path_(path), detac
   }
 }
 
+void ObjReading::reserve(const ObjCounts& counts) {
+  soup_.positions.reserve(detached_ ? counts.vertices : mesh_capacity(counts.vertices));
+  soup_.obj.texcoords.reserve(counts.texcoords);
+  soup_.obj.normals.reserve(counts.normals);
+  soup_.corners.reserve(counts.corners);
+  if (counts.slashed_corners) {
+    soup_.corner_texcoord.reserve(counts.corners);
+    soup_.corner_normal.reserve(counts.corners);
+  }
+  soup_.face_end.reserve(counts.faces);
+  soup_.face_line.reserve(counts.faces);
+}
+
 void ObjReading::fail_here(const std::string& reason) const {
   fail(path_, at_line(statements_->line()) + reason);
 }
@@ -201,6 +215,7 @@ void ObjReading::read_vertex_colour(std::string_view rest) {
   if (soup_.layout.vertex.empty()) {
     for (const char* name : {"red", "green", "blue"}) soup_.layout.vertex.push_back({name});
     soup_.vertex_values.resize(3);
+    for (auto& column : soup_.vertex_values) column.reserve(soup_.positions.capacity());
   }
   for (int c = 0; c < 3; ++c) {
     soup_.vertex_values[c].resize(soup_.positions.size() - 1, 0.0);
@@ -320,10 +335,11 @@ void ObjReading::read_face() {
   any_normal_ = all_or_none(normal_, given.normals, partial_normals_) || any_normal_;
   const std::size_t face = soup_.face_count();
   soup_.end_face(soup_.corners.size(), statements_->line());
-  material_.give(face);
-  group_.give(face);
-  object_.give(face);
-  smoothing_.give(face);
+  const std::size_t room = soup_.face_end.capacity();
+  material_.give(face, room);
+  group_.give(face, room);
+  object_.give(face, room);
+  smoothing_.give(face, room);
 }
 
 void ObjReading::check_indices(const CornerColumn& column, std::size_t defined,

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "holefill/io.h"
+#include "obj_estimate.h"
 #include "obj_statements.h"
 #include "soup.h"
 #include "two_parts.h"
@@ -105,6 +106,10 @@ class ObjReading {
   ObjReading(const ObjReading&) = delete;
   ObjReading& operator=(const ObjReading&) = delete;
 
+  // Gives the soup's arrays room for `counts` elements (see obj_estimate.h), before anything is
+  // read; a reading that is not detached gives its positions the mesh's room as well (the mesh
+  // then takes them without a copy).
+  void reserve(const ObjCounts& counts);
   // Reads the statements of `text` (whole lines), which follows what was read so far. Throws
   // FileError or InvalidMeshError naming the line at the first bad statement.
   void read(std::string_view text);
@@ -134,14 +139,17 @@ class ObjReading {
     int number(std::string_view name);
     // Gives the faces read from now on `name`.
     void set(std::string_view name) { current = number(name); }
-    // Records `current` for face `face` (values stay empty while every face has the initial).
-    void give(std::size_t face) {
+    // Records `current` for face `face` (values stay empty while every face has the initial),
+    // giving the values room for `room` faces when they start.
+    void give(std::size_t face, std::size_t room) {
       if (current == initial && faces.empty()) return;
+      if (faces.empty()) faces.reserve(room);
       if (faces.size() < face) faces.resize(face, initial);
       faces.push_back(current);
     }
-    // Appends `later`'s faces (a detached part's, `count` of them) after this one's `own`.
-    void append(const FaceNames& later, std::size_t own, std::size_t count);
+    // Appends `later`'s faces (a detached part's, `count` of them) after this one's `own`,
+    // giving the values room for `room` faces when they start.
+    void append(const FaceNames& later, std::size_t own, std::size_t count, std::size_t room);
   };
   static constexpr int kInherited = -1;
 
