@@ -6,9 +6,11 @@
 // lines; all: mixed line ends), with errors of every kind on either side, the soup, the report
 // and every error message are those of the one-thread reading, byte for byte.
 #include <cstdio>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "io/face_lines.h"
 #include "io/mesh_from_triangles.h"
 #include "io/obj_estimate.h"
 #include "io/readers.h"
@@ -27,6 +29,13 @@ template <class Values>
 std::string listed(const Values& values) {
   std::string out;
   for (const auto& value : values) out += std::to_string(value) + ' ';
+  return out + '\n';
+}
+
+std::string listed_runs(const std::vector<std::pair<std::size_t, std::size_t>>& runs) {
+  std::string out;
+  for (const auto& [face, line] : runs)
+    out += std::to_string(face) + ':' + std::to_string(line) + ' ';
   return out + '\n';
 }
 
@@ -55,9 +64,9 @@ std::string read_whole_or_cut(const std::string& text, std::size_t split_near,
     out += attribute.name + ' ' + std::to_string(static_cast<int>(attribute.type)) + ' ';
   }
   out += "\ncorners " + listed(soup.corners) + "ends " + listed(soup.face_end) + "lines " +
-         listed(soup.face_line) + "texcoord " + listed(soup.corner_texcoord) + "normal " +
-         listed(soup.corner_normal) + "material " + listed(soup.face_material) + "group " +
-         listed(soup.face_group) + "object " + listed(soup.face_object) + "smoothing " +
+         listed_runs(soup.face_line.runs()) + "texcoord " + listed(soup.corner_texcoord) +
+         "normal " + listed(soup.corner_normal) + "material " + listed(soup.face_material) +
+         "group " + listed(soup.face_group) + "object " + listed(soup.face_object) + "smoothing " +
          listed(soup.face_smoothing);
   const ObjTables& obj = soup.obj;
   for (const auto& uvw : obj.texcoords) out += hex(uvw[0]) + hex(uvw[1]) + hex(uvw[2]);
@@ -196,7 +205,7 @@ TEST(OffParts, ArraysHaveTheRoomOfTheCountedRecords) {
     EXPECT_EQ(soup.positions.capacity(), io::mesh_capacity(kVertices)) << split_near;
     EXPECT_EQ(soup.corners.capacity(), std::size_t{3 * kFaces}) << split_near;
     EXPECT_EQ(soup.face_end.capacity(), std::size_t{kFaces}) << split_near;
-    EXPECT_EQ(soup.face_line.capacity(), std::size_t{kFaces}) << split_near;
+    EXPECT_TRUE(soup.face_line.runs().empty()) << split_near;  // no line is kept per face
   }
 }
 
@@ -222,6 +231,37 @@ std::string textured_grid_obj(int side) {
     }
   }
   return text;
+}
+
+// FaceLines keeps runs of faces a line apart; each face's line is what a vector of one line per
+// face held, whole or appended in two parts at any face, and the runs are the same either way.
+TEST(FaceLines, RunsGiveEachFacesLineAsALinePerFaceDid) {
+  std::mt19937 random(15);
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::size_t faces = 1 + random() % 40;
+    std::vector<std::size_t> line_of(faces, 0);
+    std::size_t line = 1 + random() % 3;
+    for (std::size_t f = 0; f < faces; ++f) {
+      line += random() % 4 == 0 ? 2 + random() % 3 : 1;  // mostly the next line
+      line_of[f] = random() % 9 == 0 ? 0 : line;         // sometimes unknown
+    }
+    io::FaceLines whole;
+    for (std::size_t f = 0; f < faces; ++f) whole.add(f, line_of[f]);
+    for (std::size_t f = 0; f < faces; ++f) ASSERT_EQ(whole.line(f), line_of[f]) << trial;
+    EXPECT_EQ(whole.line(faces + 3), line_of[faces - 1] == 0 ? 0 : line_of[faces - 1] + 4);
+    // Cut after `cut` faces, the second part's lines counted from the first part's last line.
+    const std::size_t cut = random() % (faces + 1), lines_before = cut ? line_of[cut - 1] : 0;
+    io::FaceLines first, second;
+    for (std::size_t f = 0; f < cut; ++f) first.add(f, line_of[f]);
+    bool relative = true;
+    for (std::size_t f = cut; f < faces; ++f) {
+      relative = relative && (line_of[f] == 0 || line_of[f] > lines_before);
+      second.add(f - cut, line_of[f] == 0 ? 0 : line_of[f] - lines_before);
+    }
+    if (!relative) continue;
+    first.append(second, cut, faces - cut, lines_before);
+    EXPECT_EQ(first.runs(), whole.runs()) << trial << " cut " << cut;
+  }
 }
 
 TEST(ObjEstimate, SamplesGiveTheCountsWithAMarginOrNothingForASmallText) {
@@ -271,7 +311,8 @@ TEST(ObjParts, ArraysHaveTheRoomOfTheEstimate) {
     EXPECT_EQ(soup.corner_texcoord.capacity(), counts.corners) << split_near;
     EXPECT_EQ(soup.corner_normal.capacity(), counts.corners) << split_near;
     EXPECT_EQ(soup.face_end.capacity(), counts.faces) << split_near;
-    EXPECT_EQ(soup.face_line.capacity(), counts.faces) << split_near;
+    // The faces follow each other a line apart: one run.
+    EXPECT_EQ(soup.face_line.runs().size(), 1u) << split_near;
     EXPECT_EQ(soup.face_material.capacity(), counts.faces) << split_near;
     EXPECT_EQ(soup.face_group.capacity(), counts.faces) << split_near;
     EXPECT_EQ(read_whole_or_cut(text, split_near), whole);

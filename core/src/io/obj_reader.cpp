@@ -107,7 +107,7 @@ void ObjReading::FaceNames::append(const FaceNames& later, std::size_t own, std:
                     std::all_of(later.faces.begin(), later.faces.end(),
                                 [&](int value) { return ours(value) == 0; });
   if (!none) {
-    if (faces.empty()) faces.reserve(std::max(room, own + count));
+    if (faces.empty()) reserve_on_huge_pages(faces, std::max(room, own + count));
     faces.resize(own, 0);
     faces.resize(own + inheriting, current);
     for (const int value : later.faces) faces.push_back(ours(value));
@@ -139,11 +139,10 @@ bool ObjReading::append(ObjReading& second) {
   texcoord_.append(second.texcoord_, corners, later_corners, texcoords);
   normal_.append(second.normal_, corners, later_corners, normals);
   soup_.face_end.reserve(faces + later.face_count());
-  soup_.face_line.reserve(faces + later.face_count());
   for (std::size_t f = 0; f < later.face_count(); ++f) {
     soup_.face_end.push_back(corners + later.face_end[f]);
-    soup_.face_line.push_back(lines_ + later.face_line[f]);
   }
+  soup_.face_line.append(later.face_line, faces, later.face_count(), lines_);
   FaceNames ObjReading::*const per_face[] = {&ObjReading::material_, &ObjReading::group_,
                                              &ObjReading::object_, &ObjReading::smoothing_};
   for (const auto names : per_face) {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "huge_pages.h"
 #include "mesh_from_triangles.h"
 #include "text_scan.h"
 
@@ -121,16 +122,17 @@ ObjReading::ObjReading(const fs::path& path, bool detached) : path_(path), detac
 }
 
 void ObjReading::reserve(const ObjCounts& counts) {
-  soup_.positions.reserve(detached_ ? counts.vertices : mesh_capacity(counts.vertices));
-  soup_.obj.texcoords.reserve(counts.texcoords);
-  soup_.obj.normals.reserve(counts.normals);
-  soup_.corners.reserve(counts.corners);
+  reserve_on_huge_pages(soup_.positions,
+                        detached_ ? counts.vertices : mesh_capacity(counts.vertices),
+                        counts.vertices);
+  reserve_on_huge_pages(soup_.obj.texcoords, counts.texcoords);
+  reserve_on_huge_pages(soup_.obj.normals, counts.normals);
+  reserve_on_huge_pages(soup_.corners, counts.corners);
   if (counts.slashed_corners) {
-    soup_.corner_texcoord.reserve(counts.corners);
-    soup_.corner_normal.reserve(counts.corners);
+    reserve_on_huge_pages(soup_.corner_texcoord, counts.corners);
+    reserve_on_huge_pages(soup_.corner_normal, counts.corners);
   }
-  soup_.face_end.reserve(counts.faces);
-  soup_.face_line.reserve(counts.faces);
+  reserve_on_huge_pages(soup_.face_end, counts.faces);
 }
 
 void ObjReading::fail_here(const std::string& reason) const {
@@ -348,7 +350,7 @@ void ObjReading::check_indices(const CornerColumn& column, std::size_t defined,
   for (std::size_t f = 0, c = 0; f < soup_.face_count(); ++f) {
     for (; c < soup_.face_end[f]; ++c) {
       if (!column.beyond(c, defined)) continue;
-      fail(path_, at_line(soup_.face_line[f]) + "face refers to " + kind.name + " " +
+      fail(path_, at_line(soup_.face_line.line(f)) + "face refers to " + kind.name + " " +
                       std::to_string(column.index(c) + 1) + ", but the file has " +
                       std::to_string(defined) + " " + kind.plural);
     }

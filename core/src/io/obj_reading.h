@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "holefill/io.h"
+#include "huge_pages.h"
 #include "obj_estimate.h"
 #include "obj_statements.h"
 #include "soup.h"
@@ -106,9 +107,10 @@ class ObjReading {
   ObjReading(const ObjReading&) = delete;
   ObjReading& operator=(const ObjReading&) = delete;
 
-  // Gives the soup's arrays room for `counts` elements (see obj_estimate.h), before anything is
-  // read; a reading that is not detached gives its positions the mesh's room as well (the mesh
-  // then takes them without a copy).
+  // Gives the soup's arrays room for `counts` elements (see obj_estimate.h), on huge pages
+  // (huge_pages.h: a fault per 4 KB page was a large part of reading a big file), before
+  // anything is read; a reading that is not detached gives its positions the mesh's room as well
+  // (the mesh then takes them without a copy).
   void reserve(const ObjCounts& counts);
   // Reads the statements of `text` (whole lines), which follows what was read so far. Throws
   // FileError or InvalidMeshError naming the line at the first bad statement.
@@ -143,7 +145,7 @@ class ObjReading {
     // giving the values room for `room` faces when they start.
     void give(std::size_t face, std::size_t room) {
       if (current == initial && faces.empty()) return;
-      if (faces.empty()) faces.reserve(room);
+      if (faces.empty()) reserve_on_huge_pages(faces, room);
       if (faces.size() < face) faces.resize(face, initial);
       faces.push_back(current);
     }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "face_lines.h"
 #include "holefill/attributes.h"
 #include "holefill/errors.h"
 #include "holefill/mesh.h"
@@ -23,9 +24,8 @@ struct Soup {
   std::vector<Point> positions;
   std::vector<int> corners;           // vertex indices of all faces, one after another
   std::vector<std::size_t> face_end;  // face f uses corners [face_end[f-1], face_end[f])
-  // Where face f was read (0: unknown), for messages; empty while no face's line is known (a
-  // binary file's faces: 8 bytes a face that said nothing).
-  std::vector<std::size_t> face_line;
+  // Where each face was read, for messages (a binary file's faces: none known).
+  FaceLines face_line;
   // What the file carried beyond positions and faces: one column per attribute of the layout,
   // with a value per position (vertex) or per face.
   AttributeLayout layout;
@@ -43,9 +43,7 @@ struct Soup {
   // Closes the face whose last corner is corners[end - 1] (corners may be filled later).
   void end_face(std::size_t end, std::size_t line) {
     face_end.push_back(end);
-    if (line == 0 && face_line.empty()) return;
-    face_line.resize(face_end.size() - 1, 0);  // the faces before, whose lines were unknown
-    face_line.push_back(line);
+    face_line.add(face_end.size() - 1, line);
   }
 };
 

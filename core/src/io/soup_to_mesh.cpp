@@ -482,7 +482,7 @@ Mesh build_mesh(Soup soup, LoadReport& report, std::size_t two_threads_from) {
   // The polygons are triangles now.
   std::vector<int>().swap(soup.corners);
   std::vector<std::size_t>().swap(soup.face_end);
-  std::vector<std::size_t>().swap(soup.face_line);
+  soup.face_line = FaceLines();
   // Duplicate faces and duplicate positions, one beside the other.
   const bool count_positions = report.format != "stl";
   std::size_t duplicate_positions = 0;

@@ -58,12 +58,13 @@ void append_and_free(std::vector<T>& to, std::vector<T>& from) {
 // (OFF, PLY), so only the face ends move. Attribute columns are the caller's.
 inline void append_positions_and_faces(Soup& soup, Soup& later) {
   append_and_free(soup.positions, later.positions);
-  const std::size_t corners = soup.corners.size();
+  const std::size_t corners = soup.corners.size(), faces = soup.face_count();
   append_and_free(soup.corners, later.corners);
   soup.face_end.reserve(soup.face_count() + later.face_count());
   for (const std::size_t end : later.face_end) soup.face_end.push_back(corners + end);
   std::vector<std::size_t>().swap(later.face_end);
-  append_and_free(soup.face_line, later.face_line);
+  soup.face_line.append(later.face_line, faces, soup.face_count() - faces, 0);
+  later.face_line = FaceLines();
 }
 
 }  // namespace holefill::io
