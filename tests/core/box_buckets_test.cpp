@@ -1,5 +1,5 @@
-// BoxBuckets against a scan of every box added: the same ids for lookups of every size and for
-// boxes with huge, infinite, NaN or no extent, whatever the cell size.
+// BoxBuckets and FaceGrid against a scan of every box: the same ids for lookups of every size and
+// for boxes with huge, infinite, NaN or no extent, whatever the cell size.
 #include "box_buckets.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +9,8 @@
 #include <random>
 #include <utility>
 #include <vector>
+
+#include "face_grid.h"
 
 namespace holefill::detail {
 namespace {
@@ -85,6 +87,34 @@ TEST(BoxBuckets, FindsWhatAScanOfEveryBoxFinds) {
     const Box everything =
         box_between(Point(-INFINITY, -INFINITY, -INFINITY), Point(INFINITY, INFINITY, INFINITY));
     EXPECT_EQ(sorted_overlapping(buckets, everything), scanned_overlapping(added, everything));
+  }
+}
+
+TEST(FaceGrid, FindsWhatAScanOfEveryBoxFinds) {
+  std::uniform_int_distribution<int> kind(0, 60);
+  for (const int count : {0, 1, 7, 3000}) {
+    for (const double scale : {1.0, 1e-200, 1e200}) {
+      std::mt19937 rng(count);
+      std::vector<std::pair<int, Box>> boxes;
+      for (int b = 0; b < count; ++b) {
+        Box box = random_box(rng, kind(rng));
+        box.low *= scale;
+        box.high *= scale;
+        boxes.emplace_back(5 * b + 3, box);  // ids need not be indices
+      }
+      const FaceGrid grid(boxes);
+      for (int lookup = 0; lookup < 300; ++lookup) {
+        const int lookup_kind = kind(rng);
+        Box box = random_box(rng, lookup_kind);
+        if (lookup % 2 == 0) box.grow(2.0);
+        box.low *= scale;
+        box.high *= scale;
+        // near() promises ascending ids, each once: what the sorted scan gives.
+        ASSERT_EQ(grid.near(box), scanned_overlapping(boxes, box))
+            << count << " boxes, scale " << scale << ", lookup " << lookup << ", kind "
+            << lookup_kind;
+      }
+    }
   }
 }
 
