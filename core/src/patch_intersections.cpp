@@ -30,42 +30,52 @@ std::vector<IntersectingPair> triangle_intersections(
     const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
     const PatchFaceSet* in_patch, const MeshFaceIndex* around) {
   if (triangles.empty()) return {};
-  // Candidates: the patch's triangles first, then the mesh's faces near them.
-  std::vector<std::array<Point, 3>> corners = triangles;
-  std::vector<FaceHandle> faces(triangles.size());
-  std::vector<std::pair<int, Box>> boxes;
+  // Candidates: the patch's triangles first, then the mesh's faces near them. The arrays are
+  // sized before they are filled, and the mesh faces' corners read again rather than kept: after
+  // each stage of a large hole they hold hundreds of thousands of entries, and on this VM
+  // faulting in fresh pages was a quarter of the checks.
   Box reach;
+  for (const auto& t : triangles) reach.add(box_of_corners(t));
+  reach.grow(1e-9 * (reach.high - reach.low).max());
+  const std::vector<int> near_reach = around ? around->near(reach) : std::vector<int>{};
+  const std::size_t candidates = triangles.size() + near_reach.size();
+  std::vector<FaceHandle> faces;
+  faces.reserve(candidates);
+  faces.resize(triangles.size());
+  std::vector<std::pair<int, Box>> boxes;
+  boxes.reserve(candidates);
   for (const auto& t : triangles) {
     boxes.emplace_back(static_cast<int>(boxes.size()), box_of_corners(t));
-    reach.add(boxes.back().second);
   }
-  reach.grow(1e-9 * (reach.high - reach.low).max());
   auto consider = [&](FaceHandle f) {
     if ((in_patch && in_patch->contains(f)) || mesh.valence(f) != 3) return;
     const Box box = box_of(mesh, f);
     if (!box.overlaps(reach)) return;
-    auto fv = mesh.cfv_iter(f);
-    corners.push_back({mesh.point(*fv), mesh.point(*++fv), mesh.point(*++fv)});
     faces.push_back(f);
     boxes.emplace_back(static_cast<int>(boxes.size()), box);
   };
   if (around) {
-    for (const int f : around->near(reach)) consider(FaceHandle(f));
+    for (const int f : near_reach) consider(FaceHandle(f));
   } else {
     for (const auto f : mesh.faces()) consider(f);
   }
   double magnitude = 0.0;
   for (const auto& [id, box] : boxes) magnitude = std::max(magnitude, box.magnitude());
   const double scale = scale_for(magnitude);
-  std::vector<std::optional<Triangle3>> scaled;
-  for (const auto& c : corners) scaled.push_back(triangle_from(c, scale));
-
   const int patch_triangles = static_cast<int>(triangles.size());
+  std::vector<std::optional<Triangle3>> scaled;
+  scaled.reserve(faces.size());
+  for (const auto& t : triangles) scaled.push_back(triangle_from(t, scale));
+  for (std::size_t o = triangles.size(); o < faces.size(); ++o) {
+    auto fv = mesh.cfv_iter(faces[o]);
+    scaled.push_back(triangle_from({mesh.point(*fv), mesh.point(*++fv), mesh.point(*++fv)}, scale));
+  }
+
   std::vector<IntersectingPair> pairs;
-  const FaceGrid grid(boxes);
+  const FaceGrid grid(std::move(boxes));
   for (int i = 0; i < patch_triangles; ++i) {
     if (!scaled[i]) continue;
-    for (const int o : grid.near(boxes[i].second)) {
+    for (const int o : grid.near(box_of_corners(triangles[i]))) {
       if (o < patch_triangles && o <= i) continue;  // pairs within the patch: once, from the first
       if (!scaled[o] || !triangles_intersect(*scaled[i], *scaled[o])) continue;
       pairs.push_back(o < patch_triangles ? IntersectingPair{i, o, FaceHandle()}
