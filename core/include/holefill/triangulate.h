@@ -73,8 +73,8 @@ struct TriangulateOptions {
 
 // The dynamic program stores apexes in 16 bits: holes must have fewer boundary edges than this.
 inline constexpr std::size_t kMaxPolygonSize = 0xFFFF;
-// The full search needs 30 bytes per (i, k) cell (n^2 / 2 cells): above this many edges
-// (135 MB) only the restricted search runs.
+// The full search needs 30 bytes per (i, k) cell (n^2 / 2 cells), 54 with the normals the
+// maxmin and liepa weights keep: above this many edges (243 MB) only the restricted search runs.
 inline constexpr std::size_t kMaxFullSearchEdges = 3000;
 
 // The weight's components for a whole triangulation, whatever the weight: the quantities the
