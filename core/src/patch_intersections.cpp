@@ -85,9 +85,9 @@ std::vector<IntersectingPair> triangle_intersections(
   return pairs;
 }
 
-std::vector<std::pair<int, int>> chords_through_mesh(const Mesh& mesh,
-                                                     const std::vector<Point>& points,
-                                                     const MeshFaceIndex* around) {
+std::vector<std::pair<int, int>> chords_through_mesh(
+    const Mesh& mesh, const std::vector<Point>& points, const MeshFaceIndex* around,
+    const std::vector<std::pair<int, int>>* among) {
   const int n = static_cast<int>(points.size());
   Box reach;
   for (const auto& p : points) reach.add(p);
@@ -113,15 +113,20 @@ std::vector<std::pair<int, int>> chords_through_mesh(const Mesh& mesh,
   }
   const SegmentBoxTree tree(std::move(boxes));
   std::vector<std::pair<int, int>> chords;
+  auto test = [&](int i, int k) {
+    if (k - i < 2 || (i == 0 && k == n - 1)) return;
+    const bool through = tree.any_along(points[i], points[k], [&](int o) {
+      return triangles[o] &&
+             segment_enters_triangle(points[i] * scale, points[k] * scale, *triangles[o]);
+    });
+    if (through) chords.emplace_back(i, k);
+  };
+  if (among) {
+    for (const auto& [i, k] : *among) test(i, k);
+    return chords;
+  }
   for (int i = 0; i < n; ++i) {
-    for (int k = i + 2; k < n; ++k) {
-      if (i == 0 && k == n - 1) continue;
-      const bool through = tree.any_along(points[i], points[k], [&](int o) {
-        return triangles[o] &&
-               segment_enters_triangle(points[i] * scale, points[k] * scale, *triangles[o]);
-      });
-      if (through) chords.emplace_back(i, k);
-    }
+    for (int k = i + 2; k < n; ++k) test(i, k);
   }
   return chords;
 }

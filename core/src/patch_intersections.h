@@ -34,10 +34,11 @@ std::vector<IntersectingPair> triangle_intersections(
 
 // The chords (i, k), i < k, between non-neighbouring points of a hole's polygon whose segment
 // passes through the interior of a face of the mesh (any triangle with such a side intersects
-// it). `around` as for triangle_intersections.
-std::vector<std::pair<int, int>> chords_through_mesh(const Mesh& mesh,
-                                                     const std::vector<Point>& points,
-                                                     const MeshFaceIndex* around);
+// it), in ascending order. `around` as for triangle_intersections. With `among`, only those
+// chords (ascending, i < k) are tested: the restricted search's, on a hole it alone solves.
+std::vector<std::pair<int, int>> chords_through_mesh(
+    const Mesh& mesh, const std::vector<Point>& points, const MeshFaceIndex* around,
+    const std::vector<std::pair<int, int>>* among = nullptr);
 
 // triangle_intersections for a patch already in the mesh; `triangle` indexes patch.faces.
 std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch& patch,

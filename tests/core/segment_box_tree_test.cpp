@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <random>
 #include <set>
 #include <vector>
@@ -123,6 +124,21 @@ TEST(ChordsThroughMesh, AreTheChordsThatEnterSomeFaceOfTheMesh) {
   for (const auto& p : points) reach.add(p);
   const MeshFaceIndex around(mesh, {reach});
   EXPECT_EQ(chords_through_mesh(mesh, points, &around), expected);
+
+  // Among given chords: every third one, and neighbours and the closing edge, never reported.
+  std::vector<std::pair<int, int>> among{{0, 1}, {0, n - 1}};
+  for (int i = 0; i < n; ++i) {
+    for (int k = i + 2; k < n; ++k) {
+      if ((i + k) % 3 == 0) among.emplace_back(i, k);
+    }
+  }
+  std::sort(among.begin(), among.end());
+  std::vector<std::pair<int, int>> expected_among;
+  std::copy_if(expected.begin(), expected.end(), std::back_inserter(expected_among),
+               [](const auto& chord) { return (chord.first + chord.second) % 3 == 0; });
+  ASSERT_GT(expected_among.size(), 3u);
+  EXPECT_EQ(chords_through_mesh(mesh, points, &around, &among), expected_among);
+  EXPECT_EQ(chords_through_mesh(mesh, points, nullptr, &among), expected_among);
 }
 
 }  // namespace
