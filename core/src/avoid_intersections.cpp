@@ -1,6 +1,7 @@
 #include "avoid_intersections.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <set>
 
@@ -13,6 +14,11 @@ namespace {
 // Solves of the dynamic program after the first: with the chosen weight, then with each other.
 constexpr int kRoundsWithChosenWeight = 12;
 constexpr int kRoundsWithOtherWeight = 6;
+// Up to this many edges a round whose restricted search finds nothing runs the full search, as
+// the plan does (up to about 1.5 s a round); above it the rounds keep to the restricted search,
+// and only its chords are tested against the mesh: a 2,400-edge loop paid 15 s a round, and 28 s
+// to test its 2.9M chords.
+constexpr std::size_t kFullSearchInRoundsUpTo = 1500;
 
 std::vector<WeightKind> weights_in_order(WeightKind chosen) {
   std::vector<WeightKind> order{chosen};
@@ -83,8 +89,9 @@ PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
   // Chords through the mesh are forbidden at once: every triangle with such a side intersects.
   // A hole the rounds below leave to the restricted search alone needs only its chords tested
   // (a 2,400-edge loop has 2.9M chords, the restricted search about 150K).
-  const bool restricted_alone =
-      options.restricted.above_edges > 0 && polygon.points.size() > options.restricted.above_edges;
+  const bool restricted_alone = options.restricted.above_edges > 0 &&
+                                polygon.points.size() > options.restricted.above_edges &&
+                                polygon.points.size() > kFullSearchInRoundsUpTo;
   std::vector<std::pair<int, int>> restricted;
   if (restricted_alone) {
     restricted = restricted_chords(polygon, options.restricted);
@@ -99,10 +106,11 @@ PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
   for (const WeightKind weight : weights_in_order(options.weight)) {
     TriangulateOptions with = options;
     with.weight = weight;
-    // Holes large enough for the restricted search keep to it in these rounds, or a 2,400-edge
-    // hole would pay the full search's ten seconds a round (the plan may have come from the full
-    // search, where the restricted one folded or found nothing). Hence `restricted_alone`.
-    with.restricted.full_search_fallback = false;
+    // The plan may have come from the full search, where the restricted one folded or found
+    // nothing; the rounds fall back to it only where the restricted search finds nothing, and
+    // only up to kFullSearchInRoundsUpTo edges.
+    with.restricted.full_search_above_dihedral = INFINITY;
+    with.restricted.full_search_fallback = !restricted_alone;
     const int rounds = weight == options.weight ? kRoundsWithChosenWeight : kRoundsWithOtherWeight;
     for (int round = 0; round < rounds; ++round) {
       forbid(current, found, forbidden);
