@@ -14,10 +14,12 @@
 
 #include "dirty_meshes.h"
 #include "holefill/holes.h"
+#include "holefill/obj_attributes.h"
 #include "io/mesh_from_triangles.h"
 #include "io/readers.h"
 #include "io/soup_to_mesh.h"
 #include "io/two_threads.h"
+#include "mesh_room.h"
 #include "test_meshes.h"
 
 namespace holefill::testing {
@@ -273,6 +275,54 @@ std::vector<DirtySoup> dirty_soups() {
       quads, [](const Point& p) { return p[0] < 0.5; }, 0.0, rng);
   soups.push_back({"terrain with polygons, cut apart", quads});
   return soups;
+}
+
+// Properties that assemble adds before the mesh has elements (a loaded OBJ's corners and faces)
+// get the room the mesh's own arrays get, and each element its default value.
+TEST(MeshAssembly, PropertiesAddedBeforeTheElementsGetTheMeshsRoom) {
+  const Mesh grid = make_grid(40, [](double x, double y) { return 0.1 * x * y; });
+  std::vector<Point> positions;
+  for (const auto v : grid.vertices()) positions.push_back(grid.point(v));
+  std::vector<io::Triangle> triangles;
+  for (const auto f : grid.faces()) {
+    io::Triangle t;
+    int c = 0;
+    for (const auto v : grid.fv_range(f)) t[c++] = v.idx();
+    triangles.push_back(t);
+  }
+  OpenMesh::HPropHandleT<int> corner;
+  OpenMesh::FPropHandleT<double> weight;
+  OpenMesh::VPropHandleT<int> label;
+  LoadReport report;
+  const Mesh mesh =
+      io::assemble(positions, triangles, std::vector<char>(triangles.size(), 0), positions.size(),
+                   report, nullptr, {}, io::kTwoThreadsFrom, [&](Mesh& empty) {
+                     ASSERT_EQ(empty.n_vertices() + empty.n_halfedges() + empty.n_faces(), 0u);
+                     empty.add_property(corner, "corner");
+                     empty.add_property(weight, "weight");
+                     empty.add_property(label, "label");
+                   });
+  ASSERT_EQ(mesh.n_faces(), triangles.size());
+  const auto& corners = mesh.property(corner).data_vector();
+  const auto& weights = mesh.property(weight).data_vector();
+  const auto& labels = mesh.property(label).data_vector();
+  EXPECT_EQ(corners.size(), mesh.n_halfedges());
+  EXPECT_EQ(corners.capacity(), 2 * detail::with_room(mesh.n_edges()));
+  EXPECT_EQ(weights.size(), mesh.n_faces());
+  EXPECT_EQ(weights.capacity(), detail::with_room(mesh.n_faces()));
+  EXPECT_EQ(labels.size(), mesh.n_vertices());
+  EXPECT_EQ(labels.capacity(), detail::with_room(mesh.n_vertices()));
+  EXPECT_TRUE(std::all_of(corners.begin(), corners.end(), [](int c) { return c == 0; }));
+  EXPECT_TRUE(std::all_of(weights.begin(), weights.end(), [](double w) { return w == 0.0; }));
+  // A loaded OBJ's corner numbers: made so, not added to the mesh once it had its elements.
+  const Mesh textured = load_mesh_from_memory(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 1\n"
+      "f 1/1 2/2 3/1\nf 2/2 4/1 3/2\n",
+      "two.obj");
+  const ObjHandles obj = obj_handles(textured);
+  ASSERT_TRUE(obj.valid());
+  EXPECT_EQ(textured.property(obj.texcoord).data_vector().capacity(),
+            2 * detail::with_room(textured.n_edges()));
 }
 
 TEST(MeshAssembly, DirtySoupsLoadAsOneMeshInEveryFormatAndAsAddFaceBuildsIt) {

@@ -283,6 +283,19 @@ void add_vertices(Mesh& mesh, std::vector<Point>& positions) {
   mesh.resize(count, 0, 0);
 }
 
+// Asks for huge pages under the first `count` values of each int and double property in
+// [begin, end) (what the library's per-element properties hold), before they are written.
+void prefer_huge_pages_for_properties(OpenMesh::BaseKernel::prop_iterator begin,
+                                      OpenMesh::BaseKernel::prop_iterator end, std::size_t count) {
+  for (auto property = begin; property != end; ++property) {
+    if (auto* ints = dynamic_cast<OpenMesh::PropertyT<int>*>(*property)) {
+      prefer_huge_pages(ints->data_vector().data(), count * sizeof(int));
+    } else if (auto* doubles = dynamic_cast<OpenMesh::PropertyT<double>*>(*property)) {
+      prefer_huge_pages(doubles->data_vector().data(), count * sizeof(double));
+    }
+  }
+}
+
 }  // namespace
 
 std::size_t mesh_capacity(std::size_t count) { return with_room(count); }
@@ -291,7 +304,8 @@ std::size_t mesh_capacity(std::size_t count) { return with_room(count); }
 // neighbours) are kept, on their own copies of their corners, so no data is lost.
 Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
               std::vector<char> detached, std::size_t original_vertices, LoadReport& report,
-              MeshSources* sources, EdgeUses uses, std::size_t two_threads_from) {
+              MeshSources* sources, EdgeUses uses, std::size_t two_threads_from,
+              const std::function<void(Mesh&)>& add_properties) {
   if (sources) {
     sources->vertex = identity(positions.size());
     sources->face.clear();
@@ -313,7 +327,12 @@ Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
   std::vector<Triangle>().swap(triangles);  // the uses and the ranks say the rest
   const std::size_t edges = count_edges(uses);
   Mesh mesh;
+  if (add_properties) add_properties(mesh);
   mesh.reserve(with_room(positions.size()), with_room(edges), with_room(first_corner_rank.size()));
+  prefer_huge_pages_for_properties(mesh.vprops_begin(), mesh.vprops_end(), positions.size());
+  prefer_huge_pages_for_properties(mesh.hprops_begin(), mesh.hprops_end(), 2 * edges);
+  prefer_huge_pages_for_properties(mesh.fprops_begin(), mesh.fprops_end(),
+                                   first_corner_rank.size());
   add_vertices(mesh, positions);
   if (!first_corner_rank.empty()) {  // the faces' array too, on huge pages before it is written
     mesh.resize(mesh.n_vertices(), 0, 1);

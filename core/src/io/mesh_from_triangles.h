@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -106,11 +107,14 @@ struct MeshSources {
 // edges are made, and the uses a block at a time as the edges are. The mesh has room for an eighth
 // more of each element (what filling adds), so that adding the first patch does not copy every
 // array into one twice its size. From `two_threads_from` faces on, independent parts run on two
-// threads (two_threads.h), with the same mesh.
+// threads (two_threads.h), with the same mesh. `add_properties` (when given) adds properties to
+// the mesh before it has elements: they get the room its arrays get, and their int and double
+// arrays are on huge pages as its own are.
 Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
               std::vector<char> detached, std::size_t original_vertices, LoadReport& report,
               MeshSources* sources, EdgeUses uses = {},
-              std::size_t two_threads_from = kTwoThreadsFrom);
+              std::size_t two_threads_from = kTwoThreadsFrom,
+              const std::function<void(Mesh&)>& add_properties = {});
 
 // The capacity assemble gives the mesh's arrays for `count` elements: a reader that knows how
 // many positions it will read reserves this many, so that they become the mesh's without a copy.

@@ -97,6 +97,10 @@ bool has_corner_values(const Soup& soup) {
 
 bool has_attributes(const Soup& soup) { return !soup.layout.empty() || has_obj_values(soup); }
 
+void add_soup_properties(const Soup& soup, Mesh& mesh) {
+  if (has_obj_values(soup)) add_obj_handles(mesh);
+}
+
 void copy_soup_attributes(Soup& soup, const SoupOrigins& origins, Mesh& mesh, bool two) {
   copy_layout_values(soup, origins, mesh, two);
   copy_obj_values(soup, origins, mesh, two);

@@ -31,6 +31,12 @@ bool has_attributes(const Soup& soup);
 // properties is written back as it was read (binary stays binary, floats stay floats).
 void keep_file_format(const Soup& soup, Mesh& mesh);
 
+// Adds to `mesh`, which has no elements yet, the OBJ properties copy_soup_attributes fills (when
+// the soup carries OBJ values): added to a mesh with elements, each was made, zeroed and made
+// again with the mesh's room; added before, they take the room the mesh is reserved with (on huge
+// pages, mesh_from_triangles.h).
+void add_soup_properties(const Soup& soup, Mesh& mesh);
+
 // Copies the soup's attributes to the mesh's elements (nothing when it carries none), each half
 // of the elements on its own thread when `two`; the soup's OBJ tables are moved to the mesh.
 void copy_soup_attributes(Soup& soup, const SoupOrigins& origins, Mesh& mesh, bool two);

@@ -508,9 +508,10 @@ Mesh build_mesh(Soup soup, LoadReport& report, std::size_t two_threads_from) {
   std::vector<char> detached = make_consistent(triangulation.triangles, triangulation.corners,
                                                positions, origin, report, uses);
   MeshSources sources;
-  Mesh mesh = assemble(std::move(positions), std::move(triangulation.triangles),
-                       std::move(detached), original_vertices, report,
-                       track_origins ? &sources : nullptr, std::move(uses), two_threads_from);
+  Mesh mesh =
+      assemble(std::move(positions), std::move(triangulation.triangles), std::move(detached),
+               original_vertices, report, track_origins ? &sources : nullptr, std::move(uses),
+               two_threads_from, [&soup](Mesh& empty) { add_soup_properties(soup, empty); });
   keep_file_format(soup, mesh);
   if (!track_origins) return mesh;
   const SoupOrigins origins = origins_of(mesh, sources, triangulation, origin, track_corners, two);
