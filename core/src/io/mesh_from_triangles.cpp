@@ -266,9 +266,9 @@ std::vector<Triangle> detach(const std::vector<Triangle>& triangles,
   return kept;
 }
 
-// The identity 0, 1, ..., count - 1.
+// The identity 0, 1, ..., count - 1 (on huge pages).
 std::vector<int> identity(std::size_t count) {
-  std::vector<int> numbers(count);
+  std::vector<int> numbers = huge_page_vector(count, 0);
   std::iota(numbers.begin(), numbers.end(), 0);
   return numbers;
 }

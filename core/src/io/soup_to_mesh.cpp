@@ -185,6 +185,7 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
   constexpr signed char kTurned = 2;
   std::vector<signed char> flip = huge_page_vector(triangles.size(), static_cast<signed char>(-1));
   std::vector<int> piece, queue;
+  piece.reserve(triangles.size());  // a connected mesh is one piece: it grew to all by doubling
   std::size_t flipped = 0;
   for (int seed = 0; seed < count; ++seed) {
     if (flip[seed] >= 0) continue;
@@ -442,12 +443,12 @@ Triangulation triangulate_soup(const Soup& soup, bool track_origins, bool track_
 SoupOrigins origins_of(const Mesh& mesh, const MeshSources& sources,
                        const Triangulation& triangulation, const std::vector<int>& origin,
                        bool track_corners, bool two) {
-  SoupOrigins origins;
-  origins.vertex.resize(sources.vertex.size());
-  origins.face.resize(sources.face.size());
+  SoupOrigins origins;  // on huge pages, as the mesh's arrays they are read into
+  origins.vertex = huge_page_vector(sources.vertex.size(), 0);
+  origins.face = huge_page_vector(sources.face.size(), 0);
   if (track_corners) {
-    origins.face_corners.resize(sources.face.size());
-    origins.face_corner_vertices.resize(sources.face.size());
+    origins.face_corners = huge_page_vector(sources.face.size(), Triangle{});
+    origins.face_corner_vertices = huge_page_vector(sources.face.size(), Triangle{});
   }
   run_in_halves(two, sources.vertex.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) origins.vertex[v] = origin[sources.vertex[v]];
