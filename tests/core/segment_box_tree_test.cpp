@@ -95,9 +95,9 @@ TEST(ChordsThroughMesh, AreTheChordsThatEnterSomeFaceOfTheMesh) {
           24, [](double x, double y) { return 0.05 * std::sin(6 * x) * std::cos(5 * y); }),
       [](const Point& c) { return std::hypot(c[0] - 0.5, c[1] - 0.5) < 0.3; });
   const auto holes = find_holes(mesh);
-  const auto inner = std::find_if(holes.begin(), holes.end(), [](const Hole& hole) {
-    return std::hypot(hole.centroid[0] - 0.5, hole.centroid[1] - 0.5) < 0.05;
-  });
+  // The round hole is the smaller loop (the grid's outer border has the same centroid).
+  const auto inner = std::min_element(
+      holes.begin(), holes.end(), [](const Hole& a, const Hole& b) { return a.size() < b.size(); });
   ASSERT_NE(inner, holes.end());
   std::vector<Point> points;
   for (const auto v : inner->vertices) points.push_back(mesh.point(v));
@@ -125,17 +125,17 @@ TEST(ChordsThroughMesh, AreTheChordsThatEnterSomeFaceOfTheMesh) {
   const MeshFaceIndex around(mesh, {reach});
   EXPECT_EQ(chords_through_mesh(mesh, points, &around), expected);
 
-  // Among given chords: every third one, and neighbours and the closing edge, never reported.
+  // Among given chords: every other one, and neighbours and the closing edge, never reported.
   std::vector<std::pair<int, int>> among{{0, 1}, {0, n - 1}};
   for (int i = 0; i < n; ++i) {
     for (int k = i + 2; k < n; ++k) {
-      if ((i + k) % 3 == 0) among.emplace_back(i, k);
+      if ((i + k) % 2 == 0) among.emplace_back(i, k);
     }
   }
   std::sort(among.begin(), among.end());
   std::vector<std::pair<int, int>> expected_among;
   std::copy_if(expected.begin(), expected.end(), std::back_inserter(expected_among),
-               [](const auto& chord) { return (chord.first + chord.second) % 3 == 0; });
+               [](const auto& chord) { return (chord.first + chord.second) % 2 == 0; });
   ASSERT_GT(expected_among.size(), 3u);
   EXPECT_EQ(chords_through_mesh(mesh, points, &around, &among), expected_among);
   EXPECT_EQ(chords_through_mesh(mesh, points, nullptr, &among), expected_among);
