@@ -31,13 +31,6 @@ class BoxBuckets {
   std::size_t size() const { return entries_.size(); }
 
  private:
-  struct CellSpan {
-    std::int64_t low[3], high[3];
-    double count;  // how many cells (a double: it can be huge)
-  };
-  // The cells `box` touches; nothing when a coordinate is NaN.
-  bool span_of(const Box& box, CellSpan& span) const;
-
   static constexpr int kNoLink = -1;
   struct Link {
     int entry, next;  // the next link of the same cell, or kNoLink

@@ -1,6 +1,7 @@
 #include "face_grid.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace holefill::detail {
 namespace {
@@ -10,13 +11,25 @@ constexpr double kMaxCellsPerFace = 64, kMaxCellsPerLookup = 1 << 20;
 // Cell indices are clamped to this range, so that they fit in 64 bits whatever the coordinates.
 constexpr double kMaxCellIndex = 1e15;
 
-std::uint64_t key_of(std::int64_t x, std::int64_t y, std::int64_t z) {
-  // 21 bits per axis; distant cells may share a key, which only adds candidates.
+}  // namespace
+
+std::optional<CellSpan> cell_span(const Box& box, double cell) {
+  CellSpan span;
+  span.count = 1.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double low = std::floor(box.low[axis] / cell), high = std::floor(box.high[axis] / cell);
+    if (std::isnan(low) || std::isnan(high)) return std::nullopt;
+    span.low[axis] = static_cast<std::int64_t>(std::clamp(low, -kMaxCellIndex, kMaxCellIndex));
+    span.high[axis] = static_cast<std::int64_t>(std::clamp(high, -kMaxCellIndex, kMaxCellIndex));
+    span.count *= static_cast<double>(span.high[axis] - span.low[axis] + 1);
+  }
+  return span;
+}
+
+std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
   auto bits = [](std::int64_t i) { return static_cast<std::uint64_t>(i) & 0x1FFFFF; };
   return bits(x) << 42 | bits(y) << 21 | bits(z);
 }
-
-}  // namespace
 
 double Box::magnitude() const {
   double largest = 0.0;
@@ -44,51 +57,27 @@ FaceGrid::FaceGrid(std::vector<std::pair<int, Box>> boxes) : entries_(std::move(
   const double cell = 2.0 * mean_extent;
   cell_ = std::isfinite(cell) && cell > 0.0 ? cell : 1.0;
   for (std::size_t e = 0; e < entries_.size(); ++e) {
-    const auto range = cell_range(entries_[e].second);
-    if (!range || !(range->cells <= kMaxCellsPerFace)) {
+    const auto range = cell_span(entries_[e].second, cell_);
+    if (!range || !(range->count <= kMaxCellsPerFace)) {
       unfiled_.push_back(e);
       continue;
     }
-    for (auto x = range->low[0]; x <= range->high[0]; ++x) {
-      for (auto y = range->low[1]; y <= range->high[1]; ++y) {
-        for (auto z = range->low[2]; z <= range->high[2]; ++z) {
-          cells_.emplace_back(key_of(x, y, z), e);
-        }
-      }
-    }
+    for_each_cell_key(*range, [&](std::uint64_t key) { cells_.emplace_back(key, e); });
   }
   std::sort(cells_.begin(), cells_.end());
 }
 
-std::optional<FaceGrid::CellRange> FaceGrid::cell_range(const Box& box) const {
-  CellRange range;
-  range.cells = 1.0;
-  for (int axis = 0; axis < 3; ++axis) {
-    const double low = std::floor(box.low[axis] / cell_), high = std::floor(box.high[axis] / cell_);
-    if (std::isnan(low) || std::isnan(high)) return std::nullopt;
-    range.low[axis] = static_cast<std::int64_t>(std::clamp(low, -kMaxCellIndex, kMaxCellIndex));
-    range.high[axis] = static_cast<std::int64_t>(std::clamp(high, -kMaxCellIndex, kMaxCellIndex));
-    range.cells *= static_cast<double>(range.high[axis] - range.low[axis] + 1);
-  }
-  return range;
-}
-
 std::vector<int> FaceGrid::near(const Box& box) const {
   std::vector<std::size_t> found;
-  const auto range = cell_range(box);
-  if (!range || !(range->cells <= kMaxCellsPerLookup)) {
+  const auto range = cell_span(box, cell_);
+  if (!range || !(range->count <= kMaxCellsPerLookup)) {
     for (std::size_t e = 0; e < entries_.size(); ++e) found.push_back(e);
   } else {
-    for (auto x = range->low[0]; x <= range->high[0]; ++x) {
-      for (auto y = range->low[1]; y <= range->high[1]; ++y) {
-        for (auto z = range->low[2]; z <= range->high[2]; ++z) {
-          const std::uint64_t key = key_of(x, y, z);
-          auto at = std::lower_bound(cells_.begin(), cells_.end(),
-                                     std::pair<std::uint64_t, std::size_t>(key, 0));
-          for (; at != cells_.end() && at->first == key; ++at) found.push_back(at->second);
-        }
-      }
-    }
+    for_each_cell_key(*range, [&](std::uint64_t key) {
+      auto at = std::lower_bound(cells_.begin(), cells_.end(),
+                                 std::pair<std::uint64_t, std::size_t>(key, 0));
+      for (; at != cells_.end() && at->first == key; ++at) found.push_back(at->second);
+    });
     found.insert(found.end(), unfiled_.begin(), unfiled_.end());
   }
   std::vector<int> ids;

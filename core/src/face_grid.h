@@ -42,6 +42,28 @@ struct Box {
 
 Box box_of(const Mesh& mesh, FaceHandle face);
 
+// The cells of a uniform grid of side `cell` that a box touches, shared by FaceGrid and
+// BoxBuckets (box_buckets.h). Indices grow with the coordinates and are clamped (infinities too)
+// so that they fit in 64 bits; boxes that overlap share a cell.
+struct CellSpan {
+  std::array<std::int64_t, 3> low, high;
+  double count;  // how many cells (a double: it can be huge)
+};
+// Nothing when a coordinate is NaN (such a box has no cell).
+std::optional<CellSpan> cell_span(const Box& box, double cell);
+// A cell's hash key: 21 bits per axis, so distant cells may share a key, which only adds
+// candidates. Below 2^63: never FlatIndexMap's empty key.
+std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z);
+// Calls visit(key) for each cell of `span`.
+template <class Visit>
+void for_each_cell_key(const CellSpan& span, const Visit& visit) {
+  for (auto x = span.low[0]; x <= span.high[0]; ++x) {
+    for (auto y = span.low[1]; y <= span.high[1]; ++y) {
+      for (auto z = span.low[2]; z <= span.high[2]; ++z) visit(cell_key(x, y, z));
+    }
+  }
+}
+
 class FaceGrid {
  public:
   // Files each (id, box) under the cells its box touches; cells are twice the boxes' mean extent.
@@ -51,12 +73,6 @@ class FaceGrid {
   std::vector<int> near(const Box& box) const;
 
  private:
-  struct CellRange {
-    std::array<std::int64_t, 3> low, high;
-    double cells;  // how many (a double: it can be huge)
-  };
-  std::optional<CellRange> cell_range(const Box& box) const;
-
   double cell_ = 1.0;
   std::vector<std::pair<int, Box>> entries_;
   std::vector<std::pair<std::uint64_t, std::size_t>> cells_;  // (cell key, entry), sorted
