@@ -300,6 +300,10 @@ void prefer_huge_pages_for_properties(OpenMesh::BaseKernel::prop_iterator begin,
 
 std::size_t mesh_capacity(std::size_t count) { return with_room(count); }
 
+void reserve_positions(std::vector<Point>& positions, std::size_t count, bool first_of_file) {
+  reserve_on_huge_pages(positions, first_of_file ? mesh_capacity(count) : count, count);
+}
+
 // Faces that could not join the surface (an edge with a third face, a face turned against its
 // neighbours) are kept, on their own copies of their corners, so no data is lost.
 Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,

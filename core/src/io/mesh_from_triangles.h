@@ -119,5 +119,8 @@ Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
 // The capacity assemble gives the mesh's arrays for `count` elements: a reader that knows how
 // many positions it will read reserves this many, so that they become the mesh's without a copy.
 std::size_t mesh_capacity(std::size_t count);
+// Reserves, on huge pages, room for `count` positions a reader is about to read: mesh_capacity's
+// when they are the file's first (the mesh then takes them without a copy), else `count`.
+void reserve_positions(std::vector<Point>& positions, std::size_t count, bool first_of_file);
 
 }  // namespace holefill::io

@@ -122,9 +122,7 @@ ObjReading::ObjReading(const fs::path& path, bool detached) : path_(path), detac
 }
 
 void ObjReading::reserve(const ObjCounts& counts) {
-  reserve_on_huge_pages(soup_.positions,
-                        detached_ ? counts.vertices : mesh_capacity(counts.vertices),
-                        counts.vertices);
+  reserve_positions(soup_.positions, counts.vertices, !detached_);
   reserve_on_huge_pages(soup_.obj.texcoords, counts.texcoords);
   reserve_on_huge_pages(soup_.obj.normals, counts.normals);
   reserve_on_huge_pages(soup_.corners, counts.corners);

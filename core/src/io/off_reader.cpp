@@ -4,7 +4,6 @@
 #include <cstring>
 #include <string>
 
-#include "huge_pages.h"
 #include "mesh_from_triangles.h"
 #include "readers.h"
 #include "text_scan.h"
@@ -200,9 +199,8 @@ void OffBody::reserve(unsigned long long first, std::size_t bytes) {
   const unsigned long long vertices = counts_.vertices - std::min(first, counts_.vertices);
   const unsigned long long faces_before = first - std::min(first, counts_.vertices);
   const unsigned long long faces = counts_.faces - std::min(faces_before, counts_.faces);
-  reserve_on_huge_pages(soup_.positions, first == 0 ? mesh_capacity(vertices) : vertices, vertices);
-  reserve_on_huge_pages(soup_.corners, std::min<unsigned long long>(3 * faces, bytes));
-  reserve_on_huge_pages(soup_.face_end, faces);
+  reserve_positions(soup_.positions, static_cast<std::size_t>(vertices), first == 0);
+  reserve_faces(soup_, static_cast<std::size_t>(faces), bytes);
 }
 
 void OffBody::read(std::string_view text, std::size_t lines_before, unsigned long long first,

@@ -3,7 +3,6 @@
 #include <cstring>
 #include <string>
 
-#include "huge_pages.h"
 #include "mesh_from_triangles.h"
 #include "ply_header.h"
 #include "readers.h"
@@ -224,14 +223,8 @@ unsigned long long read_element(PlyBody& body, const PlyElement& element,
   // The header's counts fit the file; the room is what the mesh takes the positions with.
   const unsigned long long count = element.count - first;
   // On huge pages (huge_pages.h), where a fault per 4 KB page was a large part of reading them.
-  if (is_vertex) {
-    reserve_on_huge_pages(soup.positions, first == 0 ? mesh_capacity(count) : count, count);
-  }
-  if (is_face) {
-    reserve_on_huge_pages(soup.face_end, count);
-    // Triangles, most often; each corner takes at least a byte of the file.
-    reserve_on_huge_pages(soup.corners, std::min<std::size_t>(3 * count, body.remaining()));
-  }
+  if (is_vertex) reserve_positions(soup.positions, static_cast<std::size_t>(count), first == 0);
+  if (is_face) reserve_faces(soup, static_cast<std::size_t>(count), body.remaining());
   for (unsigned long long r = first; r < element.count; ++r) {
     if (!body.begin_record(element.name, r, element.count)) return r - first;
     Point p(0.0, 0.0, 0.0);

@@ -2,16 +2,25 @@
 // file, the line or record where it can, and the reason. sniff() tells the formats apart.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <string_view>
 
 #include "holefill/io.h"
+#include "huge_pages.h"
 #include "soup.h"
 
 namespace holefill::io {
 
 enum class Format { Obj, Off, Ply, Stl, Unknown };
+
+// Reserves, on huge pages, room for `faces` faces a reader is about to read and their corners as
+// triangles (most files' faces), at most one corner per byte of the `bytes` that hold them.
+inline void reserve_faces(Soup& soup, std::size_t faces, std::size_t bytes) {
+  reserve_on_huge_pages(soup.corners, std::min(3 * faces, bytes));
+  reserve_on_huge_pages(soup.face_end, faces);
+}
 
 // "obj", "off", "ply", "stl" or "unknown".
 const char* name_of(Format format);
