@@ -1,15 +1,15 @@
 // The apex loop's first test over many apexes at once (full_search.cpp). A candidate apex's value
-// is at least the larger of its two sides' keys (weights.h), so it can beat a cell's best only
-// when both keys are at most the best key; the keys of a row's left sides and of a column's right
-// sides lie contiguously, so most apexes are ruled out four at a time.
+// is at least the lane-wise maximum of its two sides' keys (weight_key::lane_max), so it can beat
+// a cell's best only when that is at most the best key; the keys of a row's left sides and of a
+// column's right sides lie contiguously, so most apexes are ruled out four at a time.
 #pragma once
 
 #include <cstdint>
 
 namespace holefill::detail {
 
-// A function returning the first j in [0, count) with left[j] <= best and right[j] <= best, or
-// count when there is none.
+// A function returning the first j in [0, count) with weight_key::lane_max(left[j], right[j]) <=
+// best, or count when there is none.
 using BoundScan = int (*)(const std::uint64_t* left, const std::uint64_t* right, int count,
                           std::uint64_t best);
 

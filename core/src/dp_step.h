@@ -138,6 +138,15 @@ template <bool kPrune, class Weight, class NormalAcross>
   }
 }
 
+// A candidate tied with the best on key loses when its area is larger: when twice its triangle's
+// area exceeds the root of this, the area exceeds the best's whatever the rounding, since the room
+// is widened by a millionth of the best area (a candidate in that margin takes the exact test).
+// Comparing squares spares the root for most tied candidates, which are rejected here.
+inline double squared_twice_room(double best_area, double sides_lower_bound) {
+  const double room = (best_area - sides_lower_bound) + 1e-6 * best_area;
+  return 4.0 * room * room;
+}
+
 // Tries triangle (i, m, k) on top of the sub-polygon values `left` (i..m) and `right` (m..k).
 // normal_across(a, b) gives the normal of the triangle chosen for sub-polygon (a, b), or of the
 // mesh face across (a, b) when that is an edge of the polygon. With kPrune, a candidate is
@@ -155,8 +164,13 @@ template <bool kPrune, class Weight, class NormalAcross>
   const Point& a = polygon.points[i];
   const Point to_m = polygon.points[m] - a, to_k = polygon.points[k] - a;
   const Point cross = OpenMesh::cross(to_m, to_k);
+  const double squared_norm = cross.sqrnorm();
+  if (kPrune && key == best.value.key &&
+      squared_norm > squared_twice_room(best.value.area, sides_lower_bound)) {
+    return;  // the triangle alone overfills the area left to beat the best: no root needed
+  }
   // An overflowing cross product (NaN or inf) weighs as an infinite area, so areas always compare.
-  const double norm = cross.norm();
+  const double norm = std::sqrt(squared_norm);
   const double half_area = norm < INFINITY ? 0.5 * norm : INFINITY;
   if (kPrune && best.excludes(key, sides_lower_bound + half_area, m)) return;
   const double area = (left.area + *right.area) + half_area;

@@ -105,10 +105,10 @@ struct Tables {
 };
 
 // Solves strips of rows of the tables; one per thread. With kPrune a candidate is skipped when the
-// larger of its two sides' keys already exceeds the best key (a lower bound of its value,
-// weights.h) or ties it with no smaller area, then as soon as a partial value cannot beat the
-// best (try_apex). The values computed are the same either way, so the result is the plain
-// loop's (kPrune = false), and tests check it.
+// lane-wise maximum of its two sides' keys already exceeds the best key (a lower bound of its
+// value, weight_key::lane_max) or ties it with no smaller area, then as soon as a partial value
+// cannot beat the best (try_apex). The values computed are the same either way, so the result is
+// the plain loop's (kPrune = false), and tests check it.
 template <bool kPrune, class Weight>
 class StripSolver {
  public:
@@ -181,7 +181,7 @@ class StripSolver {
     const std::uint64_t* left_key = t_.row_key.data() + (sides.left + (i + 1));  // from m = i + 1
     const std::uint64_t* right_key = t_.column_key.data() + sides.right;         // (m, k) at [m]
     for (int m = i + 1; m < k; ++m) {
-      if (kKeysBound && std::max(left_key[m - i - 1], right_key[m]) > best.value.key) {
+      if (kKeysBound && weight_key::lane_max(left_key[m - i - 1], right_key[m]) > best.value.key) {
         // Most apexes fail the bound, in long runs: skip them four at a time.
         m += 1 + first_within_bound_(left_key + (m - i), right_key + (m + 1), k - m - 1,
                                      best.value.key);
@@ -197,7 +197,7 @@ class StripSolver {
     const std::size_t right_column = sides.right + static_cast<std::size_t>(m);
     const std::uint64_t left = t_.row_key[left_cell], right = t_.column_key[right_column];
     if constexpr (kPrune) {
-      const std::uint64_t bound = std::max(left, right);
+      const std::uint64_t bound = weight_key::lane_max(left, right);
       if (bound > best.value.key) return;
       if (bound == best.value.key &&
           best.excludes(bound, t_.row_area[left_cell] + t_.column_area[right_column], m)) {

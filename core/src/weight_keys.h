@@ -66,6 +66,25 @@ inline std::uint64_t max_angle_lanes(std::uint64_t a, std::uint64_t b) {
 #endif
 }
 
+// The larger of a's and b's value in every lane, the degenerate count's included: a lower bound
+// of their combination under every weight (counts add, angle lanes take the larger, lanes a
+// weight never sets are zero in both), and at least the larger of the two keys. The dynamic
+// program bounds a candidate by it: with the dihedral lane below the smallest angle's, a side's
+// small angle and the other side's large dihedral combine into a key larger than either.
+inline std::uint64_t lane_max(std::uint64_t a, std::uint64_t b) {
+#if defined(__SSE2__) && defined(__x86_64__)
+  const __m128i x = _mm_cvtsi64_si128(static_cast<long long>(a));
+  const __m128i y = _mm_cvtsi64_si128(static_cast<long long>(b));
+  return static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_add_epi16(y, _mm_subs_epu16(x, y))));
+#else
+  std::uint64_t lanes = 0;
+  for (const int shift : {kDegenerateShift, kLaneA, kLaneB, kLaneC}) {
+    lanes |= std::max((a >> shift) & kLaneMax, (b >> shift) & kLaneMax) << shift;
+  }
+  return lanes;
+#endif
+}
+
 // The combination of two keys: degenerate counts add, angle lanes take the larger. Lanes a
 // weight never sets are zero, and each weight combines only its own (faster in the inner loop).
 inline std::uint64_t combine(std::uint64_t a, std::uint64_t b) {

@@ -198,11 +198,20 @@ TEST(RestrictedSearch, ReturnsNothingWhenCancelled) {
   EXPECT_FALSE(triangulate_polygon(testing::wavy_hole(1000), options));
 }
 
-// The first j with both keys at most `best`, one by one.
+// The larger of a's and b's value in each 16-bit lane, lane by lane.
+std::uint64_t lane_max_by_hand(std::uint64_t a, std::uint64_t b) {
+  std::uint64_t lanes = 0;
+  for (int shift = 0; shift < 64; shift += 16) {
+    lanes |= std::max((a >> shift) & 0xFFFF, (b >> shift) & 0xFFFF) << shift;
+  }
+  return lanes;
+}
+
+// The first j whose lane-wise maximum of the keys is at most `best`, one by one.
 int first_within_bound_by_hand(const std::vector<std::uint64_t>& left,
                                const std::vector<std::uint64_t>& right, std::uint64_t best) {
   for (std::size_t j = 0; j < left.size(); ++j) {
-    if (left[j] <= best && right[j] <= best) return static_cast<int>(j);
+    if (lane_max_by_hand(left[j], right[j]) <= best) return static_cast<int>(j);
   }
   return static_cast<int>(left.size());
 }
@@ -210,9 +219,11 @@ int first_within_bound_by_hand(const std::vector<std::uint64_t>& left,
 TEST(BoundScan, FindsTheFirstApexWithinTheBoundLikeAPlainLoop) {
   std::mt19937_64 rng(11);
   const detail::BoundScan fastest = detail::fastest_bound_scan();
-  // Keys from a few values (ties with the bound) and from the whole range (the top bit set:
-  // unsigned order, not signed), at every length around the vector width.
-  const std::vector<std::uint64_t> few{0, 5, 6, 7, 0x8000000000000000ull, ~0ull};
+  // Keys from a few values (ties with the bound; lanes that a plain maximum of the keys would
+  // not combine) and from the whole range (the top bit set: unsigned order, not signed), at every
+  // length around the vector width.
+  const std::vector<std::uint64_t> few{
+      0, 5, 6, 7, 0x0005'0000, 0x0005'0006, 0x8000000000000000ull, ~0ull};
   for (int trial = 0; trial < 4000; ++trial) {
     const int count = trial % 40;
     const bool from_few = trial % 2 == 0;
@@ -250,6 +261,33 @@ TEST(WeightKey, CombineAddsDegenerateCountsAndTakesTheLargerOfEachAngleLane) {
     }
     ASSERT_EQ(weight_key::combine(a, b), expected) << std::hex << a << " " << b;
   }
+}
+
+// The apex loop's bound: lane by lane, never above what a weight's combination gives (pruning by
+// it is exact) and never below the larger key (it prunes at least as much).
+TEST(WeightKey, LaneMaxBoundsEveryWeightsCombinationFromBelow) {
+  std::mt19937_64 rng(17);
+  const std::vector<std::uint64_t> lane_values{0, 1, 0x7FFF, 0x8000, 0xFFFE, 0xFFFF};
+  auto draw_lane = [&] {
+    return rng() % 2 ? lane_values[rng() % lane_values.size()] : rng() & 0xFFFF;
+  };
+  const MaxMinWeight max_min;
+  const LiepaWeight liepa;
+  for (int trial = 0; trial < 20000; ++trial) {
+    // Degenerate counts below 0x8000, as in combine's test; Liepa sets lane A alone.
+    const std::uint64_t count_a = (rng() % 0x8000) << 48, count_b = (rng() % 0x8000) << 48;
+    const std::uint64_t a = count_a | draw_lane() << 32 | draw_lane() << 16 | draw_lane();
+    const std::uint64_t b = count_b | draw_lane() << 32 | draw_lane() << 16 | draw_lane();
+    const std::uint64_t bound = weight_key::lane_max(a, b);
+    ASSERT_EQ(bound, lane_max_by_hand(a, b)) << std::hex << a << " " << b;
+    EXPECT_GE(bound, std::max(a, b));
+    EXPECT_LE(bound, max_min.combine(a, b));
+    const std::uint64_t liepa_a = count_a | (a & 0xFFFF'0000'0000),
+                        liepa_b = count_b | (b & 0xFFFF'0000'0000);
+    EXPECT_LE(weight_key::lane_max(liepa_a, liepa_b), liepa.combine(liepa_a, liepa_b));
+    EXPECT_LE(weight_key::lane_max(count_a, count_b), AreaWeight::combine(count_a, count_b));
+  }
+  EXPECT_EQ(weight_key::lane_max(weight_key::kInfeasible, 0), weight_key::kInfeasible);
 }
 
 }  // namespace
