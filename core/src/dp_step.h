@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 
+#include "bound_scan.h"
 #include "geometry.h"
 #include "holefill/triangulate.h"
 #include "weight_keys.h"
@@ -136,15 +137,6 @@ template <bool kPrune, class Weight, class NormalAcross>
     best.value = {key, area};
     best.apex = m;
   }
-}
-
-// A candidate tied with the best on key loses when its area is larger: when twice its triangle's
-// area exceeds the root of this, the area exceeds the best's whatever the rounding, since the room
-// is widened by a millionth of the best area (a candidate in that margin takes the exact test).
-// Comparing squares spares the root for most tied candidates, which are rejected here.
-inline double squared_twice_room(double best_area, double sides_lower_bound) {
-  const double room = (best_area - sides_lower_bound) + 1e-6 * best_area;
-  return 4.0 * room * room;
 }
 
 // Tries triangle (i, m, k) on top of the sub-polygon values `left` (i..m) and `right` (m..k).

@@ -74,6 +74,11 @@ struct Tables {
         column_normal(keep_normals ? cell_count(n) : 0),
         row_starts(static_cast<std::size_t>(n)) {
     for (int i = 0; i < n; ++i) row_starts[i] = row_start(n, i);
+    for (const Point& point : polygon.points) {
+      x.push_back(point[0]);
+      y.push_back(point[1]);
+      z.push_back(point[2]);
+    }
     for (const auto& [a, b] : polygon.forbidden_chords) {
       if (a == b || std::min(a, b) < 0 || std::max(a, b) >= n) continue;  // not a chord
       forbidden[row_index(std::min(a, b), std::max(a, b))] = true;
@@ -102,6 +107,7 @@ struct Tables {
   std::vector<bool> forbidden;          // written before the threads start
   std::vector<Point> column_normal;     // of feasible cells, when the weight needs them
   std::vector<std::size_t> row_starts;  // row_start(n, i), looked up rather than recomputed
+  std::vector<double> x, y, z;          // the points' coordinates, for the bound scan
 };
 
 // Solves strips of rows of the tables; one per thread. With kPrune a candidate is skipped when the
@@ -178,13 +184,19 @@ class StripSolver {
     if (seed != kNoApex) try_apex(i, seed, k, sides, best);
     const int seed2 = k - i > 2 ? t_.apex[t_.row_index(i, k - 1)] : kNoApex;
     if (seed2 != kNoApex && seed2 != seed) try_apex(i, seed2, k, sides, best);
-    const std::uint64_t* left_key = t_.row_key.data() + (sides.left + (i + 1));  // from m = i + 1
-    const std::uint64_t* right_key = t_.column_key.data() + sides.right;         // (m, k) at [m]
+    const Point& origin = polygon_.points[i];
+    const Point to_k = polygon_.points[k] - origin;
+    const ApexBase base{{origin[0], origin[1], origin[2]}, {to_k[0], to_k[1], to_k[2]}};
     for (int m = i + 1; m < k; ++m) {
-      if (kKeysBound && weight_key::lane_max(left_key[m - i - 1], right_key[m]) > best.value.key) {
-        // Most apexes fail the bound, in long runs: skip them four at a time.
-        m += 1 + first_within_bound_(left_key + (m - i), right_key + (m + 1), k - m - 1,
-                                     best.value.key);
+      if constexpr (kKeysBound) {
+        // Most apexes fail the bounds, in long runs: skip them four at a time.
+        const std::size_t left = sides.left + static_cast<std::size_t>(m);
+        const std::size_t right = sides.right + static_cast<std::size_t>(m);
+        const ApexRun run{t_.row_key.data() + left,  t_.column_key.data() + right,
+                          t_.row_area.data() + left, t_.column_area.data() + right,
+                          t_.x.data() + m,           t_.y.data() + m,
+                          t_.z.data() + m,           k - m};
+        m += first_within_bound_(run, base, BestSoFar{best.value.key, best.value.area});
         if (m >= k) break;
       }
       if (m != seed && m != seed2) try_apex(i, m, k, sides, best);

@@ -207,38 +207,74 @@ std::uint64_t lane_max_by_hand(std::uint64_t a, std::uint64_t b) {
   return lanes;
 }
 
-// The first j whose lane-wise maximum of the keys is at most `best`, one by one.
-int first_within_bound_by_hand(const std::vector<std::uint64_t>& left,
-                               const std::vector<std::uint64_t>& right, std::uint64_t best) {
-  for (std::size_t j = 0; j < left.size(); ++j) {
-    if (lane_max_by_hand(left[j], right[j]) <= best) return static_cast<int>(j);
+// Candidates for the bound scan, held in vectors (detail::ApexRun points into them).
+struct Candidates {
+  std::vector<std::uint64_t> left_key, right_key;
+  std::vector<double> left_area;
+  std::vector<float> right_area;
+  std::vector<double> x, y, z;
+
+  detail::ApexRun run() const {
+    return {left_key.data(), right_key.data(), left_area.data(), right_area.data(),
+            x.data(),        y.data(),         z.data(),         static_cast<int>(x.size())};
   }
-  return static_cast<int>(left.size());
+};
+
+// Whether candidate j is ruled out, by BoundScan's rule written out with OpenMesh's vectors.
+bool ruled_out_by_hand(const Candidates& c, const detail::ApexBase& base, detail::BestSoFar best,
+                       std::size_t j) {
+  const std::uint64_t bound = lane_max_by_hand(c.left_key[j], c.right_key[j]);
+  if (bound != best.key) return bound > best.key;
+  const double sides = c.left_area[j] + static_cast<double>(c.right_area[j]);
+  const Point to_m =
+      Point(c.x[j], c.y[j], c.z[j]) - Point(base.origin[0], base.origin[1], base.origin[2]);
+  const Point to_k(base.to_k[0], base.to_k[1], base.to_k[2]);
+  return sides > best.area ||
+         OpenMesh::cross(to_m, to_k).sqrnorm() > detail::squared_twice_room(best.area, sides);
 }
 
-TEST(BoundScan, FindsTheFirstApexWithinTheBoundLikeAPlainLoop) {
+TEST(BoundScan, FindsTheFirstApexNotRuledOutLikeAPlainLoop) {
   std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const detail::BoundScan fastest = detail::fastest_bound_scan();
   // Keys from a few values (ties with the bound; lanes that a plain maximum of the keys would
   // not combine) and from the whole range (the top bit set: unsigned order, not signed), at every
-  // length around the vector width.
+  // length around the vector width; areas and points such that ties go either way.
   const std::vector<std::uint64_t> few{
       0, 5, 6, 7, 0x0005'0000, 0x0005'0006, 0x8000000000000000ull, ~0ull};
-  for (int trial = 0; trial < 4000; ++trial) {
+  int ties_ruled_out = 0, ties_kept = 0;
+  for (int trial = 0; trial < 8000; ++trial) {
     const int count = trial % 40;
     const bool from_few = trial % 2 == 0;
     auto draw = [&] { return from_few ? few[rng() % few.size()] : rng(); };
-    std::vector<std::uint64_t> left(count), right(count);
+    Candidates c;
     for (int j = 0; j < count; ++j) {
-      left[j] = draw();
-      right[j] = draw();
+      c.left_key.push_back(draw());
+      c.right_key.push_back(draw());
+      c.left_area.push_back(1.0 + unit(rng));
+      c.right_area.push_back(static_cast<float>(1.0 + unit(rng)));
+      c.x.push_back(unit(rng));
+      c.y.push_back(unit(rng));
+      c.z.push_back(unit(rng));
     }
-    const std::uint64_t best = draw();
-    const int expected = first_within_bound_by_hand(left, right, best);
-    EXPECT_EQ(detail::first_within_bound_portable(left.data(), right.data(), count, best),
-              expected);
-    EXPECT_EQ(fastest(left.data(), right.data(), count, best), expected);
+    const detail::ApexBase base{{unit(rng), unit(rng), unit(rng)},
+                                {unit(rng), unit(rng), unit(rng)}};
+    const detail::BestSoFar best{draw(), 3.0 + 1.5 * unit(rng)};
+    int expected = count;
+    for (int j = 0; j < count; ++j) {
+      const bool tie = lane_max_by_hand(c.left_key[j], c.right_key[j]) == best.key;
+      const bool out = ruled_out_by_hand(c, base, best, static_cast<std::size_t>(j));
+      if (tie) ++(out ? ties_ruled_out : ties_kept);
+      if (!out) {
+        expected = j;
+        break;
+      }
+    }
+    EXPECT_EQ(detail::first_within_bound_portable(c.run(), base, best), expected);
+    EXPECT_EQ(fastest(c.run(), base, best), expected);
   }
+  EXPECT_GT(ties_ruled_out, 100);  // the area tests were exercised both ways
+  EXPECT_GT(ties_kept, 100);
 }
 
 // combine() packs three lane maxima into a few SIMD instructions: against the lanes one by one.
