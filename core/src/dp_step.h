@@ -29,8 +29,10 @@ struct SmallestAngle {
   double dot = 0.0;
 };
 // The edges ab = b - a and ac = c - a are passed in where the caller has them already.
-inline SmallestAngle smallest_angle_of_edges(const Point& ab, const Point& ac, const Point& bc,
-                                             double twice_area) {
+[[gnu::always_inline]] inline SmallestAngle smallest_angle_of_edges(const Point& ab,
+                                                                    const Point& ac,
+                                                                    const Point& bc,
+                                                                    double twice_area) {
   const double ab2 = ab.sqrnorm(), ac2 = ac.sqrnorm(), bc2 = bc.sqrnorm();
   const double longest = std::max({ab2, ac2, bc2});
   // sin(smallest angle) >= twice_area / longest^2 (up to a factor): a scale-free test, written so
@@ -74,7 +76,8 @@ inline bool is_forbidden_triangle(const HolePolygon& polygon, int i, int m, int 
 // The chord |normal - other| standing for the dihedral angle against what lies across an edge,
 // squared (the largest of several chords is the root of the largest square, one root for all):
 // nothing known there (zero) adds nothing, no orientation of our own (zero) is the worst fold.
-inline double squared_chord_against(const Point& normal, const Point& other) {
+[[gnu::always_inline]] inline double squared_chord_against(const Point& normal,
+                                                           const Point& other) {
   if (is_zero(other)) return 0.0;
   if (is_zero(normal)) return 4.0;
   return (normal - other).sqrnorm();
