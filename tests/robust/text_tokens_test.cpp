@@ -3,16 +3,21 @@
 // anything else is refused, quoted as before), '+' signs are taken but not "+-", every corner
 // spelling reads as the slow path splits it, and lines end at LF, CR LF or a lone CR in any mix.
 // The expected messages are those of the readers before the fast paths.
+#include <sys/mman.h>
+
 #include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "io/readers.h"
 #include "io/text_scan.h"
 #include "robust_test_util.h"
 
@@ -237,6 +242,46 @@ TEST(TextTokens, MixedLineEndsCountLinesAsBefore) {
             "line 7: vertex needs 3 numbers, got 'x'");
   EXPECT_EQ(refusal("OFF\r3 1 0\n\r0 0 0\r\n1 0 0\r0 1 0\n\n3 0 1 7\n", "t.off"),
             "line 8: face refers to vertex 7, but the file has 3 vertices (numbered from 0)");
+}
+
+// A text whose bytes past its first 64 KB cannot be read (the pages are mapped without access):
+// sniffing it reads only its start, where it searched the whole text for a CR before (a 100 MB
+// file was read once more, on one thread, before its reader started).
+TEST(FormatSniff, ReadsOnlyTheStartOfAText) {
+  constexpr std::size_t kReadable = std::size_t{1} << 16, kUnreadable = std::size_t{1} << 20;
+  void* pages = mmap(nullptr, kReadable + kUnreadable, PROT_READ | PROT_WRITE,
+                     MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  ASSERT_NE(pages, MAP_FAILED);
+  char* bytes = static_cast<char*>(pages);
+  ASSERT_EQ(mprotect(bytes + kReadable, kUnreadable, PROT_NONE), 0);
+  const std::pair<std::string, io::Format> starts[] = {
+      {"ply\nformat ascii 1.0\n", io::Format::Ply},
+      {"# made by hand\n\nOFF\n3 1 0\n", io::Format::Off},
+      {"mtllib a.mtl\nv 0 0 0\n", io::Format::Obj}};
+  for (const auto& [start, format] : starts) {
+    std::memset(bytes, ' ', kReadable);
+    std::memcpy(bytes, start.data(), start.size());
+    bytes[kReadable - 1] = '\n';
+    EXPECT_EQ(io::sniff(std::string_view(bytes, kReadable + kUnreadable)), format) << start;
+  }
+  munmap(pages, kReadable + kUnreadable);
+}
+
+// The first line with a keyword decides, wherever it is: after 100 KB of comments, and on a line
+// that crosses 64 KB from the start.
+TEST(FormatSniff, TheFirstKeywordLineDecidesAfterAnyNumberOfComments) {
+  std::string comments;
+  while (comments.size() < 100'000) comments += "# a comment line, then an empty one\n\n";
+  EXPECT_EQ(io::sniff(comments + "OFF\n3 1 0\n"), io::Format::Off);
+  EXPECT_EQ(io::sniff(comments + "ply\r\nformat ascii 1.0\n"), io::Format::Ply);
+  EXPECT_EQ(io::sniff(comments), io::Format::Unknown);
+  for (const std::size_t before : {std::size_t{65'534}, std::size_t{65'535}, std::size_t{65'536}}) {
+    const std::string start = std::string(before - 1, '#') + "\n";
+    EXPECT_EQ(io::sniff(start + "   OFF  \n3 1 0\n"), io::Format::Off) << before;
+    EXPECT_EQ(io::sniff(start + "  ply \t\nformat ascii 1.0\n"), io::Format::Ply) << before;
+    // "ply" with more on its line is no PLY header line.
+    EXPECT_NE(io::sniff(start + "ply" + std::string(10, ' ') + "x\n"), io::Format::Ply) << before;
+  }
 }
 
 }  // namespace
