@@ -21,6 +21,7 @@
 #include "bound_scan.h"
 #include "dp_step.h"
 #include "row_wavefront.h"
+#include "table_budget.h"
 
 namespace holefill::detail {
 namespace {
@@ -48,6 +49,16 @@ std::size_t column_start(int k) {
   const std::size_t column = static_cast<std::size_t>(k);
   return column * (column - 1) / 2;
 }
+
+}  // namespace
+
+std::size_t table_bytes(int n, bool keep_normals) {
+  const std::size_t per_cell = 2 * sizeof(std::uint64_t) + sizeof(double) + sizeof(float) +
+                               sizeof(std::uint16_t) + (keep_normals ? sizeof(Point) : 0);
+  return cell_count(n) * per_cell + cell_count(n) / 8;  // and a bit per cell: forbidden chords
+}
+
+namespace {
 
 // The area rounded down to a float: a lower bound that fits in half the space.
 float area_lower_bound(double area) {
@@ -282,6 +293,10 @@ int idle_cores() {
 template <bool kPrune, class Weight>
 std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weight& weight,
                                           int threads, const TriangulateOptions& options) {
+  const TableBudget::Lease lease = full_search_table_budget().acquire(
+      table_bytes(static_cast<int>(polygon.points.size()), Weight::kUsesDihedral),
+      [&] { return cancelled(options); });
+  if (!lease.held()) return std::nullopt;  // cancelled while waiting for room
   Tables tables(polygon, Weight::kUsesDihedral);
   const int n = tables.n;
   RowWavefront wavefront(n);
