@@ -488,6 +488,48 @@ TEST(MeshAssembly, TwoThreadsAssembleTheOneThreadMesh) {
   }
 }
 
+// Every corner of a loaded textured OBJ has the texture coordinate and normal its face gave its
+// vertex in the file, whatever the repairs did (flipped, detached, duplicate and degenerate
+// faces, split vertices, polygons), on one thread and on two. textured_obj gives soup face f's
+// corner at vertex v the numbers (v + f) % n + 1 and (v + 2 f) % n + 1, which name both.
+TEST(MeshAssembly, EveryCornerOfATexturedObjKeepsTheNumbersItsFaceGaveIt) {
+  auto soups = dirty_soups();
+  Soup all;
+  for (const auto& dirty : soups) all = append(all, dirty.soup);
+  soups.push_back({"all dirty soups in one", all});
+  for (const auto& [name, soup] : soups) {
+    const auto n = static_cast<int>(soup.points.size());
+    for (const std::size_t two_threads_from :
+         {std::numeric_limits<std::size_t>::max(), std::size_t{1}}) {
+      SCOPED_TRACE(std::string(name) + (two_threads_from == 1 ? ", two threads" : ""));
+      LoadReport report;
+      const Mesh mesh = assembled(textured_obj(soup), "textured.obj", two_threads_from, report);
+      const ObjHandles obj = obj_handles(mesh);
+      ASSERT_TRUE(obj.valid());
+      for (const auto f : mesh.faces()) {
+        std::set<int> face_numbers;  // the soup face (modulo n) each corner names
+        for (const auto h : mesh.fh_range(f)) {
+          const int texcoord = mesh.property(obj.texcoord, h) - 1,
+                    normal = mesh.property(obj.normal, h) - 1;
+          ASSERT_GE(texcoord, 0);
+          ASSERT_GE(normal, 0);
+          const int face = ((normal - texcoord) % n + n) % n;
+          const int vertex = ((texcoord - face) % n + n) % n;
+          face_numbers.insert(face);
+          EXPECT_EQ(mesh.point(mesh.to_vertex_handle(h)), soup.points[vertex]) << f.idx();
+          bool in_face = false;
+          for (std::size_t g = face; g < soup.faces.size(); g += n) {
+            const auto& corners = soup.faces[g];
+            in_face = in_face || std::find(corners.begin(), corners.end(), vertex) != corners.end();
+          }
+          EXPECT_TRUE(in_face) << f.idx();
+        }
+        EXPECT_EQ(face_numbers.size(), 1u) << f.idx();
+      }
+    }
+  }
+}
+
 // The first half's error is the one thrown when both halves fail, after both are done; the
 // second's when only it fails; none runs twice.
 TEST(MeshAssembly, TwoThreadsThrowWhatTheOneThreadAssemblyWould) {

@@ -310,17 +310,13 @@ Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
               std::vector<char> detached, std::size_t original_vertices, LoadReport& report,
               MeshSources* sources, EdgeUses uses, std::size_t two_threads_from,
               const std::function<void(Mesh&)>& add_properties) {
-  if (sources) {
-    sources->vertex = identity(positions.size());
-    sources->face.clear();
-  }
+  if (sources) *sources = MeshSources();
   report.faces_detached = 0;
   if (std::find(detached.begin(), detached.end(), 1) != detached.end()) {
+    if (sources) sources->vertex = identity(positions.size());
     triangles = detach(triangles, detached, positions, sources, report.faces_detached);
     // Detached triangles move to the end, on new vertices: the uses of the input are not theirs.
     uses = EdgeUses();
-  } else if (sources) {
-    sources->face = identity(triangles.size());
   }
   std::vector<char>().swap(detached);  // not held while the mesh's arrays grow
   if (uses.empty()) uses = EdgeUses(triangles);

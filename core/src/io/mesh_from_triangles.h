@@ -87,9 +87,12 @@ class EdgeUses {
 };
 
 // Where each element of an assembled mesh came from: the index of its input position (vertex)
-// or input triangle (face).
+// or input triangle (face). Both are empty when no triangle was detached: vertex i is then
+// position i and face t triangle t (so the arrays the caller has per position and triangle serve
+// as they are, where they were copied through the identity).
 struct MeshSources {
   std::vector<int> vertex, face;
+  bool identity() const { return vertex.empty() && face.empty(); }
 };
 
 // The mesh of `triangles` over `positions`. Triangles marked in `detached` are kept on their own

@@ -37,10 +37,11 @@ bool has_obj_values(const Soup& soup) {
          !soup.obj.normals.empty();
 }
 
-// Each halfedge of a face gets the numbers of the soup corner at its end vertex. Written into
-// the properties' arrays, the faces being triangles (through OpenMesh's property and circulator
-// calls this was about a twentieth of loading a textured OBJ). A face's halfedges are its own, so
-// each half of the faces is on its own thread when `two`.
+// Each halfedge of a face gets the numbers of the soup corner at its end vertex: the face's c-th
+// halfedge from its own, that of its c-th corner. Written into the properties' arrays, the faces
+// being triangles (through OpenMesh's property and circulator calls this was about a twentieth of
+// loading a textured OBJ). A face's halfedges are its own, so each half of the faces is on its
+// own thread when `two`.
 void copy_corner_numbers(const Soup& soup, const SoupOrigins& origins, const ObjHandles& obj,
                          Mesh& mesh, bool two) {
   std::vector<int>& texcoords = mesh.property(obj.texcoord).data_vector();
@@ -48,11 +49,8 @@ void copy_corner_numbers(const Soup& soup, const SoupOrigins& origins, const Obj
   run_in_halves(two, mesh.n_faces(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       const Triangle& corners = origins.face_corners[f];
-      const Triangle& positions = origins.face_corner_vertices[f];
       HalfedgeHandle h = mesh.halfedge_handle(FaceHandle(static_cast<int>(f)));
-      for (int side = 0; side < 3; ++side, h = mesh.next_halfedge_handle(h)) {
-        const int position = origins.vertex[mesh.to_vertex_handle(h).idx()];
-        const int c = positions[0] == position ? 0 : positions[1] == position ? 1 : 2;
+      for (int c = 0; c < 3; ++c, h = mesh.next_halfedge_handle(h)) {
         const auto k = static_cast<std::size_t>(corners[c]);
         const auto at = static_cast<std::size_t>(h.idx());
         if (!soup.corner_texcoord.empty()) texcoords[at] = soup.corner_texcoord[k];

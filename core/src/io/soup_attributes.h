@@ -11,13 +11,13 @@ namespace holefill::io {
 
 // Where the mesh's elements came from: the soup position of each vertex, the soup polygon of
 // each face, and, when the soup has corner values, for each face the soup corners (indices
-// into soup.corners) its triangle was made of, in the triangle's order, with the triangle's
-// corner vertices (soup positions) to match them by.
+// into soup.corners) its triangle was made of, in the triangle's order: the order of the face's
+// halfedges from its own, corner c at the end of the c-th (mesh_from_triangles.h: a face's
+// halfedge arrives at its triangle's first corner).
 struct SoupOrigins {
-  std::vector<int> vertex;                     // per mesh vertex: soup position
-  std::vector<int> face;                       // per mesh face: soup polygon
-  std::vector<Triangle> face_corners;          // per mesh face: soup corners (when needed)
-  std::vector<Triangle> face_corner_vertices;  // per mesh face: their soup positions
+  std::vector<int> vertex;             // per mesh vertex: soup position
+  std::vector<int> face;               // per mesh face: soup polygon
+  std::vector<Triangle> face_corners;  // per mesh face: soup corners (when needed)
 };
 
 // Whether the soup carries values per corner (the origins' corners are then needed).

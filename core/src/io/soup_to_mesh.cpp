@@ -439,17 +439,23 @@ Triangulation triangulate_soup(const Soup& soup, bool track_origins, bool track_
 
 // Where the mesh's elements came from in the soup (soup_attributes.h), from where they came from
 // in the triangles (`sources`), each triangle's polygon and corners, and each vertex's soup
-// position (`origin`). Each half of the vertices and faces on its own thread when `two`.
-SoupOrigins origins_of(const Mesh& mesh, const MeshSources& sources,
-                       const Triangulation& triangulation, const std::vector<int>& origin,
-                       bool track_corners, bool two) {
-  SoupOrigins origins;  // on huge pages, as the mesh's arrays they are read into
+// position (`origin`): those arrays themselves (taken) when the mesh's elements are the triangles'
+// and positions' (no face detached: copies of them were 18 MB of a 1M-face textured OBJ's load),
+// else composed with the sources, each half of the vertices and faces on its own thread when
+// `two`.
+SoupOrigins origins_of(const MeshSources& sources, Triangulation& triangulation,
+                       std::vector<int>& origin, bool track_corners, bool two) {
+  SoupOrigins origins;
+  if (sources.identity()) {
+    origins.vertex = std::move(origin);
+    origins.face = std::move(triangulation.face);
+    if (track_corners) origins.face_corners = std::move(triangulation.corners);
+    return origins;
+  }
+  // On huge pages, as the mesh's arrays they are read into.
   origins.vertex = huge_page_vector(sources.vertex.size(), 0);
   origins.face = huge_page_vector(sources.face.size(), 0);
-  if (track_corners) {
-    origins.face_corners = huge_page_vector(sources.face.size(), Triangle{});
-    origins.face_corner_vertices = huge_page_vector(sources.face.size(), Triangle{});
-  }
+  if (track_corners) origins.face_corners = huge_page_vector(sources.face.size(), Triangle{});
   run_in_halves(two, sources.vertex.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) origins.vertex[v] = origin[sources.vertex[v]];
   });
@@ -457,15 +463,7 @@ SoupOrigins origins_of(const Mesh& mesh, const MeshSources& sources,
     for (std::size_t f = begin; f < end; ++f) {
       const int t = sources.face[f];
       origins.face[f] = triangulation.face[t];
-      if (!track_corners) continue;
-      origins.face_corners[f] = triangulation.corners[t];
-      // The face's corners in its triangle's order (the circulator starts at the first), each the
-      // vertex it was made from, then that vertex's soup position.
-      Triangle& c = origins.face_corner_vertices[f];
-      int k = 0;
-      for (const auto v : mesh.fv_range(FaceHandle(static_cast<int>(f)))) {
-        c[k++] = origin[sources.vertex[v.idx()]];
-      }
+      if (track_corners) origins.face_corners[f] = triangulation.corners[t];
     }
   });
   return origins;
@@ -515,7 +513,7 @@ Mesh build_mesh(Soup soup, LoadReport& report, std::size_t two_threads_from) {
                two_threads_from, [&soup](Mesh& empty) { add_soup_properties(soup, empty); });
   keep_file_format(soup, mesh);
   if (!track_origins) return mesh;
-  const SoupOrigins origins = origins_of(mesh, sources, triangulation, origin, track_corners, two);
+  const SoupOrigins origins = origins_of(sources, triangulation, origin, track_corners, two);
   copy_soup_attributes(soup, origins, mesh, two);
   return mesh;
 }
