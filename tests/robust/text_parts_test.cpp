@@ -148,6 +148,21 @@ TEST(ObjParts, ErrorsOnEitherSideAreOneReadingsMessages) {
   }
 }
 
+// Each half looks for a NUL on its own thread: a NUL anywhere is refused, naming the first one,
+// before any error the reading of either half meets, as one reading refuses it before reading.
+TEST(ObjParts, ANulOnEitherSideIsRefusedBeforeAnyOtherError) {
+  const std::string start = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", nul("v 0 0 \0\n", 8);
+  for (const std::string bad : {"", "v 1 x 0\n", "f 1 2 9\n", "f 1 -99 3\n"}) {
+    expect_same_at_every_cut(start + bad + nul + start + start);
+    expect_same_at_every_cut(start + bad + start + start + nul);
+    expect_same_at_every_cut(start + nul + start + bad + start + nul);
+  }
+  // The first half's error, the second half's NUL.
+  EXPECT_EQ(read_whole_or_cut(start + "v 1 x 0\n" + start + nul, start.size() + 8),
+            "refused: /data/cut.obj: is not a text OBJ file: it holds binary data (byte " +
+                std::to_string(2 * start.size() + 14) + " is NUL) (FileError)");
+}
+
 void expect_same_off_at_every_cut(const std::string& text) {
   expect_same_at_every_cut(text, io::parse_off, "/data/cut.off");
   expect_same_at_every_cut(with_mixed_line_ends(text), io::parse_off, "/data/cut.off");

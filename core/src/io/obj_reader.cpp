@@ -170,27 +170,43 @@ bool ObjReading::append(ObjReading& second) {
 
 Soup parse_obj(std::string_view text, const fs::path& path, LoadReport& report,
                std::size_t split_near) {
-  require_text(text, path, "OBJ");
   ObjReading reading(path, false);
   const std::size_t split = split_point(text, split_near);
   if (split >= text.size()) {
+    require_text(text, path, "OBJ");
     reading.reserve(estimate_obj_counts(text));
     reading.read(text);
     return reading.finish(report);
   }
   // The second half on a thread of its own, the first here; then the second is appended, or
-  // read again after the first where it could not be read alone.
+  // read again after the first where it could not be read alone. Each thread first looks for a
+  // NUL in its half (a whole text's search, on one thread before the reading started, was the
+  // first to touch a big file's pages), and a NUL anywhere is refused before what the first half's
+  // reading threw, as one reading refuses it before reading.
   ObjReading second(path, true);
+  std::size_t first_nul = std::string_view::npos, second_nul = std::string_view::npos;
+  std::exception_ptr first_failure;
   // The first reading's arrays have the room of the whole text, where the second is appended.
   const bool second_read = read_in_two_parts(
       [&] {
-        reading.reserve(estimate_obj_counts(text));
-        reading.read(text.substr(0, split));
+        first_nul = text.substr(0, split).find('\0');
+        if (first_nul != std::string_view::npos) return;
+        try {
+          reading.reserve(estimate_obj_counts(text));
+          reading.read(text.substr(0, split));
+        } catch (...) {
+          first_failure = std::current_exception();
+        }
       },
       [&] {
+        second_nul = text.substr(split).find('\0');
+        if (second_nul != std::string_view::npos) return;
         second.reserve(estimate_obj_counts(text.substr(split)));
         second.read(text.substr(split));
       });
+  if (first_nul != std::string_view::npos) refuse_nul(first_nul, path, "OBJ");
+  if (second_nul != std::string_view::npos) refuse_nul(split + second_nul, path, "OBJ");
+  if (first_failure) std::rethrow_exception(first_failure);
   if (!second_read || !reading.append(second)) reading.read(text.substr(split));
   return reading.finish(report);
 }

@@ -181,10 +181,12 @@ bool Lines::next(std::string_view& line) {
 
 void require_text(std::string_view text, const fs::path& path, const char* format) {
   const std::size_t nul = text.find('\0');
-  if (nul != std::string_view::npos) {
-    fail(path, std::string("is not a text ") + format + " file: it holds binary data (byte " +
-                   std::to_string(nul) + " is NUL)");
-  }
+  if (nul != std::string_view::npos) refuse_nul(nul, path, format);
+}
+
+void refuse_nul(std::size_t nul, const fs::path& path, const char* format) {
+  fail(path, std::string("is not a text ") + format + " file: it holds binary data (byte " +
+                 std::to_string(nul) + " is NUL)");
 }
 
 std::string_view without_byte_order_mark(std::string_view bytes) {

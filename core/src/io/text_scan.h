@@ -204,6 +204,9 @@ class ContentLines {
 // Text formats must not hold NUL bytes: a binary file with a text format's extension is refused,
 // naming `format`.
 void require_text(std::string_view text, const std::filesystem::path& path, const char* format);
+// Refuses a text as require_text does, its byte `nul` (the first) being NUL.
+[[noreturn]] void refuse_nul(std::size_t nul, const std::filesystem::path& path,
+                             const char* format);
 
 // `bytes` without the UTF-8 byte-order mark some editors put first (the bytes as they are without
 // one).
