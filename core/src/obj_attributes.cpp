@@ -175,23 +175,23 @@ ObjHandles obj_handles(const Mesh& mesh) {
   return obj;
 }
 
-ObjHandles add_obj_handles(Mesh& mesh) {
+ObjHandles add_obj_handles(Mesh& mesh, const ObjFaceNumbers& face_numbers) {
   ObjHandles obj;
   detail::find_or_add_property(mesh, obj.tables, kTables);
   detail::find_or_add_property(mesh, obj.texcoord, kTexcoord);
   detail::find_or_add_property(mesh, obj.normal, kNormal);
-  detail::find_or_add_property(mesh, obj.material, kMaterial);
-  detail::find_or_add_property(mesh, obj.group, kGroup);
-  detail::find_or_add_property(mesh, obj.object, kObject);
-  detail::find_or_add_property(mesh, obj.smoothing, kSmoothing);
-  return obj;
+  if (face_numbers.material) detail::find_or_add_property(mesh, obj.material, kMaterial);
+  if (face_numbers.group) detail::find_or_add_property(mesh, obj.group, kGroup);
+  if (face_numbers.object) detail::find_or_add_property(mesh, obj.object, kObject);
+  if (face_numbers.smoothing) detail::find_or_add_property(mesh, obj.smoothing, kSmoothing);
+  return obj_handles(mesh);  // with the per-face numbers the mesh had already
 }
 
 std::string interpolate_patch_obj_attributes(Mesh& mesh, const Patch& patch) {
   const ObjHandles obj = obj_handles(mesh);
   if (!obj.valid() || patch.faces.empty()) return {};
   for (const auto property : {obj.material, obj.group, obj.object, obj.smoothing}) {
-    detail::take_majority_along_hole(mesh, patch, property);
+    if (property.is_valid()) detail::take_majority_along_hole(mesh, patch, property);
   }
   const std::vector<VertexHandle> fixed = fixed_vertices(mesh, patch);
   std::string note;

@@ -102,6 +102,31 @@ TEST(ObjRead, StatementsNotKeptAreNamedInAWarning) {
   EXPECT_EQ(named->find("'s'"), std::string::npos) << *named;  // smoothing groups are kept
 }
 
+// A per-face number no face has is no property of the loaded mesh (4 MB a million faces), and
+// without it the mesh is written as with every face's number 0.
+TEST(ObjRead, PerFaceNumbersNoFaceHasAreNoProperties) {
+  const std::string text =
+      "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nf 1/1 2/1 3/1\n"
+      "usemtl red\nf 2/1 4/1 3/1\n";
+  const Mesh mesh = load_mesh_from_memory(text, "t.obj");
+  const ObjHandles obj = obj_handles(mesh);
+  ASSERT_TRUE(obj.valid());
+  EXPECT_TRUE(obj.texcoord.is_valid());
+  EXPECT_TRUE(obj.normal.is_valid());
+  EXPECT_TRUE(obj.material.is_valid());
+  EXPECT_FALSE(obj.group.is_valid());
+  EXPECT_FALSE(obj.object.is_valid());
+  EXPECT_FALSE(obj.smoothing.is_valid());
+  EXPECT_EQ(obj_face_number(mesh, obj.material, FaceHandle(1)), 1);
+  EXPECT_EQ(obj_face_number(mesh, obj.group, FaceHandle(1)), 0);
+  // The same mesh with every per-face number: written alike.
+  Mesh every = mesh;
+  const ObjHandles all = add_obj_handles(every);
+  ASSERT_TRUE(all.group.is_valid() && all.object.is_valid() && all.smoothing.is_valid());
+  EXPECT_EQ(all.material, obj.material);
+  EXPECT_EQ(mesh_to_bytes(mesh, "out.obj"), mesh_to_bytes(every, "out.obj"));
+}
+
 TEST(ObjSave, SmoothingGroupsSavedWhereOnlyObjHoldsThemAreNamed) {
   const Mesh mesh = load_mesh_from_memory(std::string(kTriangle) + "s 1\nf 1 2 3\n", "t.obj");
   EXPECT_TRUE(attributes_not_written(mesh, "out.obj").empty());
@@ -194,10 +219,10 @@ FaceValues face_values(const Mesh& mesh, FaceHandle f) {
                          n ? bits_of(tables.normals[n - 1]) : none);
   }
   std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
-  return {corners, name_in(tables.materials, mesh.property(obj.material, f)),
-          name_in(tables.groups, mesh.property(obj.group, f)),
-          name_in(tables.objects, mesh.property(obj.object, f)),
-          name_in(tables.smoothing_groups, mesh.property(obj.smoothing, f))};
+  return {corners, name_in(tables.materials, obj_face_number(mesh, obj.material, f)),
+          name_in(tables.groups, obj_face_number(mesh, obj.group, f)),
+          name_in(tables.objects, obj_face_number(mesh, obj.object, f)),
+          name_in(tables.smoothing_groups, obj_face_number(mesh, obj.smoothing, f))};
 }
 
 // Every face's values, in no particular order (the writer groups faces).

@@ -14,6 +14,9 @@
 //                            statement: smoothing off)
 // Numbers count from 1, as in the file, so that the 0 OpenMesh gives an element added later
 // means "none". Original elements keep their numbers, so their values survive bit for bit.
+// The four per-face numbers are properties only where some face has one (a loaded file without
+// o statements has no object property: 4 MB a million faces); without the property every face
+// has 0, which obj_face_number reads.
 #pragma once
 
 #include <array>
@@ -45,15 +48,28 @@ struct ObjTables {
 struct ObjHandles {
   OpenMesh::MPropHandleT<ObjTables> tables;
   OpenMesh::HPropHandleT<int> texcoord, normal;
-  OpenMesh::FPropHandleT<int> material, group, object, smoothing;
+  OpenMesh::FPropHandleT<int> material, group, object, smoothing;  // each may be invalid (none)
   bool valid() const { return tables.is_valid(); }
 };
 
-// The mesh's OBJ properties; invalid handles when it has none.
+// Which per-face numbers add_obj_handles gives a mesh.
+struct ObjFaceNumbers {
+  bool material = true, group = true, object = true, smoothing = true;
+};
+
+// The mesh's OBJ properties; invalid handles when it has none (and for each per-face number it
+// has no property for).
 ObjHandles obj_handles(const Mesh& mesh);
 
-// The mesh's OBJ properties, added (empty tables, every number 0) where missing.
-ObjHandles add_obj_handles(Mesh& mesh);
+// The mesh's OBJ properties, added (empty tables, every number 0) where missing: the tables, the
+// corner numbers and the per-face numbers `face_numbers` names (all by default).
+ObjHandles add_obj_handles(Mesh& mesh, const ObjFaceNumbers& face_numbers = {});
+
+// Face f's number in `property` (one of ObjHandles' per-face numbers): 0 when the mesh has no
+// such property.
+inline int obj_face_number(const Mesh& mesh, OpenMesh::FPropHandleT<int> property, FaceHandle f) {
+  return property.is_valid() ? mesh.property(property, f) : 0;
+}
 
 // Values for the patch's faces and corners (interpolate_patch_attributes calls it): each face
 // takes the material, group, object and smoothing group most original faces along the hole have;

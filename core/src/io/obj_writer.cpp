@@ -115,14 +115,14 @@ std::vector<FaceHandle> grouped_faces(const Mesh& mesh, const ObjHandles& obj,
   std::vector<int> group_rank(tables.groups.size() + 1, -1);
   int objects = 0, groups = 0;
   for (const auto f : faces) {
-    int& object = object_rank[mesh.property(obj.object, f)];
+    int& object = object_rank[obj_face_number(mesh, obj.object, f)];
     if (object < 0) object = objects++;
-    int& group = group_rank[mesh.property(obj.group, f)];
+    int& group = group_rank[obj_face_number(mesh, obj.group, f)];
     if (group < 0) group = groups++;
   }
   auto key = [&](FaceHandle f) {
-    return std::pair(object_rank[mesh.property(obj.object, f)],
-                     group_rank[mesh.property(obj.group, f)]);
+    return std::pair(object_rank[obj_face_number(mesh, obj.object, f)],
+                     group_rank[obj_face_number(mesh, obj.group, f)]);
   };
   std::stable_sort(faces.begin(), faces.end(),
                    [&](FaceHandle a, FaceHandle b) { return key(a) < key(b); });
@@ -170,10 +170,11 @@ void append_faces_with_states(const Mesh& mesh, const ObjHandles& obj, const Obj
     out += '\n';
   };
   for (const auto f : grouped_faces(mesh, obj, tables)) {
-    switch_to(object, mesh.property(obj.object, f), "o", tables.objects, "");
-    switch_to(group, mesh.property(obj.group, f), "g", tables.groups, "default");
-    switch_to(material, mesh.property(obj.material, f), "usemtl", tables.materials, "");
-    switch_to(smoothing, mesh.property(obj.smoothing, f), "s", tables.smoothing_groups, "off");
+    switch_to(object, obj_face_number(mesh, obj.object, f), "o", tables.objects, "");
+    switch_to(group, obj_face_number(mesh, obj.group, f), "g", tables.groups, "default");
+    switch_to(material, obj_face_number(mesh, obj.material, f), "usemtl", tables.materials, "");
+    switch_to(smoothing, obj_face_number(mesh, obj.smoothing, f), "s", tables.smoothing_groups,
+              "off");
     append_face(mesh, f, obj, texcoord, normal, out);
     pieces.end_record();
   }

@@ -60,10 +60,16 @@ void copy_corner_numbers(const Soup& soup, const SoupOrigins& origins, const Obj
   });
 }
 
+// The per-face numbers some face of the soup has (the others get no property).
+ObjFaceNumbers face_numbers_of(const Soup& soup) {
+  return {!soup.face_material.empty(), !soup.face_group.empty(), !soup.face_object.empty(),
+          !soup.face_smoothing.empty()};
+}
+
 // The soup's tables are moved to the mesh, which the soup is not read for again.
 void copy_obj_values(Soup& soup, const SoupOrigins& origins, Mesh& mesh, bool two) {
   if (!has_obj_values(soup)) return;
-  const ObjHandles obj = add_obj_handles(mesh);
+  const ObjHandles obj = add_obj_handles(mesh, face_numbers_of(soup));
   if (has_corner_values(soup)) copy_corner_numbers(soup, origins, obj, mesh, two);
   const std::pair<const std::vector<int>*, OpenMesh::FPropHandleT<int>> per_face[] = {
       {&soup.face_material, obj.material},
@@ -96,7 +102,7 @@ bool has_corner_values(const Soup& soup) {
 bool has_attributes(const Soup& soup) { return !soup.layout.empty() || has_obj_values(soup); }
 
 void add_soup_properties(const Soup& soup, Mesh& mesh) {
-  if (has_obj_values(soup)) add_obj_handles(mesh);
+  if (has_obj_values(soup)) add_obj_handles(mesh, face_numbers_of(soup));
 }
 
 void copy_soup_attributes(Soup& soup, const SoupOrigins& origins, Mesh& mesh, bool two) {
