@@ -167,6 +167,14 @@ class NeighbourFlips {
 // detach_non_manifold resolves.
 std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Triangle>& corners,
                                 EdgeUses& uses) {
+  // Where no two triangles run along an edge the same way, none is flipped: the neighbours, the
+  // marks and the walk over every piece (a tenth of assembling a clean 1M-face mesh) are spared.
+  bool any_conflict = false;
+  uses.for_each_edge([&](int, std::size_t i, std::size_t j) {
+    any_conflict = any_conflict || (j - i == 2 && uses[i].triangle() != uses[i + 1].triangle() &&
+                                    uses[i].forward() == uses[i + 1].forward());
+  });
+  if (!any_conflict) return 0;
   const int count = static_cast<int>(triangles.size());
   // Up to three neighbours per triangle, and whether each must take the opposite orientation.
   auto neighbour = huge_page_vector(triangles.size(), std::array<int, 3>{-1, -1, -1});
