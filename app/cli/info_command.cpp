@@ -42,8 +42,11 @@ int run_info(const InfoArguments& a, const Streams& streams) {
     out << json_info(a.input, mesh, prepared);
     return kOk;
   }
-  out << a.input << ": " << mesh.n_vertices() << " vertices, " << mesh.n_faces() << " faces, "
-      << connected_components(mesh) << " components, " << holes.size() << " holes\n";
+  const SurfaceCounts counts = surface_counts(mesh);
+  out << a.input << ": " << mesh.n_vertices() << " vertices";
+  if (counts.unused_vertices > 0) out << " (" << counts.unused_vertices << " used by no face)";
+  out << ", " << mesh.n_faces() << " faces, " << counts.components << " components, "
+      << holes.size() << " holes\n";
   if (holes.empty()) return kOk;
   // A space between columns whatever the widths: huge values widen a row, never merge cells.
   const IslandMap islands = find_islands(mesh, holes);

@@ -139,10 +139,12 @@ std::string json_info(const std::string& input_path, const Mesh& mesh,
     if (!islands.problem[hole.id].empty()) entry["problem"] = islands.problem[hole.id];
     list.push_back(std::move(entry));
   }
+  const SurfaceCounts counts = surface_counts(mesh);
   Json document{{"input", input_path},
                 {"vertices", mesh.n_vertices()},
+                {"unused_vertices", counts.unused_vertices},
                 {"faces", mesh.n_faces()},
-                {"components", connected_components(mesh)}};
+                {"components", counts.components}};
   add_preparation(prepared, document);
   document["holes"] = std::move(list);
   return text_of(document);

@@ -75,4 +75,21 @@ std::size_t connected_components(const Mesh& mesh) {
              : static_cast<std::size_t>(*std::max_element(label.begin(), label.end()) + 1);
 }
 
+SurfaceCounts surface_counts(const Mesh& mesh) {
+  const std::vector<int> label = component_labels(mesh);
+  // Labels are numbered in order of first vertex, so a label seen for the first time is the
+  // largest so far: count the labels of used vertices that exceed every earlier one.
+  SurfaceCounts counts;
+  int highest_used = -1;
+  for (const auto v : mesh.vertices()) {
+    if (mesh.is_isolated(v)) {
+      ++counts.unused_vertices;
+    } else if (label[v.idx()] > highest_used) {
+      highest_used = label[v.idx()];
+      ++counts.components;
+    }
+  }
+  return counts;
+}
+
 }  // namespace holefill

@@ -1,5 +1,7 @@
 // The holefill command on the bundled assets: exit codes, the table, the JSON report, and that
 // a failure never leaves a partial output file.
+#include <nlohmann/json.hpp>
+
 #include "cli_test_util.h"
 #include "holefill/holes.h"
 #include "holefill/io.h"
@@ -14,6 +16,23 @@ TEST_F(Cli, InfoListsTheBunnysThreeHoles) {
   EXPECT_EQ(run.code, cli::kOk) << run.err;
   EXPECT_NE(run.out.find("3 holes"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("1 components"), std::string::npos) << run.out;
+}
+
+TEST_F(Cli, InfoCountsUnusedVerticesApartFromTheComponents) {
+  // One triangle and two vertices no face uses: one piece of surface, not three.
+  const std::string input = in_dir("unused.obj");
+  std::ofstream(input) << "v 0 0 0\nv 1 0 0\nv 5 5 5\nv 0 1 0\nv 6 6 6\nf 1 2 4\n";
+  const CliRun run = run_cli({"info", input});
+  EXPECT_EQ(run.code, cli::kOk) << run.err;
+  EXPECT_NE(run.out.find("5 vertices (2 used by no face), 1 faces, 1 components"),
+            std::string::npos)
+      << run.out;
+  const CliRun json = run_cli({"info", input, "--json"});
+  ASSERT_EQ(json.code, cli::kOk) << json.err;
+  const auto document = nlohmann::json::parse(json.out);
+  EXPECT_EQ(document["components"], 1);
+  EXPECT_EQ(document["unused_vertices"], 2);
+  EXPECT_EQ(document["vertices"], 5);
 }
 
 TEST_F(Cli, FillWritesAClosedMeshAndAReport) {

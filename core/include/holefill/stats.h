@@ -28,6 +28,15 @@ std::map<int, std::size_t> valence_histogram(const Mesh& mesh);
 // Number of connected components (vertices joined by edges; isolated vertices count as one each).
 std::size_t connected_components(const Mesh& mesh);
 
+// The surface's pieces as a user counts them: connected components of the vertices that faces
+// use, and apart from them the vertices no face uses (which connected_components counts as a
+// component each: a loaded file's unused vertices would read as that many pieces).
+struct SurfaceCounts {
+  std::size_t components = 0;
+  std::size_t unused_vertices = 0;
+};
+SurfaceCounts surface_counts(const Mesh& mesh);
+
 // The connected component of each vertex (by index), numbered 0, 1, ... in order of first vertex.
 std::vector<int> component_labels(const Mesh& mesh);
 
