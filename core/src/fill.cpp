@@ -15,6 +15,7 @@
 #include "holefill/attributes.h"
 #include "holefill/loop_groups.h"
 #include "patch_intersections.h"
+#include "patch_room.h"
 #include "safe_scale.h"
 #include "stage_undo.h"
 
@@ -269,6 +270,14 @@ std::vector<HoleFill> fill_groups(Mesh& mesh, const std::vector<Hole>& holes,
   if (failure) std::rethrow_exception(failure);
   if (cancelled()) return {};
 
+  detail::PatchRoom room;
+  for (const auto& plan : plans) {
+    if (plan.plan.triangulation) {
+      room += detail::patch_room(mesh, plan.polygon, *plan.plan.triangulation,
+                                 options.last_stage >= Stage::Refined);
+    }
+  }
+  detail::reserve_patch_room(mesh, room);
   // Patches are checked against the faces near them; each finished patch joins those faces.
   std::vector<detail::Box> regions;
   for (const auto& plan : plans)
