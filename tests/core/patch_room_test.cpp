@@ -19,12 +19,12 @@ Mesh capless_sphere() {
   return without_faces(make_icosphere(4), [](const Point& c) { return c[2] > 0.6; });
 }
 
-struct Added {
+struct AddedCounts {
   std::size_t vertices, edges, faces;
 };
 
 // What filling the mesh's largest hole up to `last` adds, and the estimate for its plan.
-std::pair<Added, detail::PatchRoom> filled_and_estimated(Stage last) {
+std::pair<AddedCounts, detail::PatchRoom> filled_and_estimated(Stage last) {
   Mesh mesh = capless_sphere();
   const std::vector<Hole> holes = find_holes(mesh);
   EXPECT_EQ(holes.size(), 1u);
