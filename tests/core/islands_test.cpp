@@ -89,6 +89,53 @@ TEST(Islands, FindsTheCapLeftInsideAnAnnulusCut) {
   EXPECT_TRUE(find_islands(mesh, holes, off).islands[0].empty());
 }
 
+// Copies of one mesh side by side, `spacing` apart along x, y and z in turn.
+Mesh copies_apart(const Mesh& part, int count, double spacing) {
+  Mesh mesh;
+  for (int c = 0; c < count; ++c) {
+    const Point offset(spacing * (c % 3), spacing * (c / 3 % 3), spacing * (c / 9));
+    std::vector<VertexHandle> added;
+    for (const auto v : part.vertices()) added.push_back(mesh.add_vertex(part.point(v) + offset));
+    for (const auto f : part.faces()) {
+      std::vector<VertexHandle> corners;
+      for (const auto v : part.fv_range(f)) corners.push_back(added[v.idx()]);
+      mesh.add_face(corners);
+    }
+  }
+  return mesh;
+}
+
+// Holes are compared only with the loops near them (a k-d tree of centroids): each of many
+// spheres, close enough that a hole's search reaches its neighbours' loops, keeps its own island
+// and no other, exactly as with one sphere.
+TEST(Islands, EachOfManyHolesFindsItsOwnIslandAmongItsNeighbours) {
+  const Mesh one = cut_around_islands(make_blob(3, unit_radius), {kNorth, 0.7}, {{kNorth, 0.3}});
+  constexpr int kCopies = 20;
+  const Mesh mesh = copies_apart(one, kCopies, 2.2);
+  const auto holes = find_holes(mesh);
+  ASSERT_EQ(holes.size(), 2u * kCopies);
+  const IslandMap map = find_islands(mesh, holes);
+  const std::vector<int> component = component_labels(mesh);
+  int outer_holes = 0;
+  for (const auto& hole : holes) {
+    const int id = hole.id;
+    EXPECT_TRUE(map.problem[id].empty()) << map.problem[id];
+    if (map.islands[id].empty()) {
+      // An island: inside exactly one hole, of the same sphere (the copy's outer surface).
+      ASSERT_GE(map.outer[id], 0) << id;
+      const Hole& outer = holes[map.outer[id]];
+      EXPECT_LT((outer.centroid - hole.centroid).norm(), 0.5) << id;
+      EXPECT_NE(component[outer.vertices[0].idx()], component[hole.vertices[0].idx()]);
+      continue;
+    }
+    ++outer_holes;
+    ASSERT_EQ(map.islands[id].size(), 1u) << id;
+    EXPECT_EQ(map.outer[map.islands[id][0]], id);
+    EXPECT_EQ(map.outer[id], -1);
+  }
+  EXPECT_EQ(outer_holes, kCopies);
+}
+
 TEST(Islands, SeparateHolesOfOneSurfaceAreNoIslands) {
   // Two holes of one sphere, the small one near the large one's plane: same component.
   const Mesh mesh =
