@@ -43,8 +43,8 @@ struct CommandLine {
     app.fallthrough();  // -q and -v also after the command's name
     app.add_flag("-q,--quiet", quiet, "no table on stdout, no progress (warnings still on stderr)")
         ->excludes(app.add_flag("-v,--verbose", verbose,
-                                "a progress line per hole on stderr from the start (without -v:\n"
-                                "once a fill has taken a second)"));
+                                "progress on stderr from the start, a line per percent\n"
+                                "(without -v: once a fill has taken a second, a line a second)"));
     info = app.add_subcommand("info", "vertices, faces, components and a table of holes");
     info->add_option("MESH", info_arguments.input, "the mesh to describe (-: stdin)")->required();
     info->add_flag("--json", info_arguments.json, "print the counts and holes as JSON");
