@@ -73,11 +73,25 @@ std::vector<int> FaceGrid::near(const Box& box) const {
   if (!range || !(range->count <= kMaxCellsPerLookup)) {
     for (std::size_t e = 0; e < entries_.size(); ++e) found.push_back(e);
   } else {
-    for_each_cell_key(*range, [&](std::uint64_t key) {
+    // A column of cells along z has consecutive keys unless the z index wraps in the key's 21
+    // bits: one binary search finds the whole column's entries instead of one per cell (lookups
+    // were 13 % of filling 20,000 holes; this took a seventh off them: bench/README.md).
+    const auto& [low, high] = std::pair(range->low, range->high);
+    const auto column_from = [&](std::uint64_t first, std::uint64_t last) {
       auto at = std::lower_bound(cells_.begin(), cells_.end(),
-                                 std::pair<std::uint64_t, std::size_t>(key, 0));
-      for (; at != cells_.end() && at->first == key; ++at) found.push_back(at->second);
-    });
+                                 std::pair<std::uint64_t, std::size_t>(first, 0));
+      for (; at != cells_.end() && at->first <= last; ++at) found.push_back(at->second);
+    };
+    for (auto x = low[0]; x <= high[0]; ++x) {
+      for (auto y = low[1]; y <= high[1]; ++y) {
+        const std::uint64_t first = cell_key(x, y, low[2]), last = cell_key(x, y, high[2]);
+        if (last >= first && last - first == static_cast<std::uint64_t>(high[2] - low[2])) {
+          column_from(first, last);
+        } else {
+          for (auto z = low[2]; z <= high[2]; ++z) column_from(cell_key(x, y, z), cell_key(x, y, z));
+        }
+      }
+    }
     found.insert(found.end(), unfiled_.begin(), unfiled_.end());
   }
   std::vector<int> ids;
