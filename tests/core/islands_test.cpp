@@ -93,14 +93,7 @@ TEST(Islands, FindsTheCapLeftInsideAnAnnulusCut) {
 Mesh copies_apart(const Mesh& part, int count, double spacing) {
   Mesh mesh;
   for (int c = 0; c < count; ++c) {
-    const Point offset(spacing * (c % 3), spacing * (c / 3 % 3), spacing * (c / 9));
-    std::vector<VertexHandle> added;
-    for (const auto v : part.vertices()) added.push_back(mesh.add_vertex(part.point(v) + offset));
-    for (const auto f : part.faces()) {
-      std::vector<VertexHandle> corners;
-      for (const auto v : part.fv_range(f)) corners.push_back(added[v.idx()]);
-      mesh.add_face(corners);
-    }
+    testing::append_mesh(mesh, part, Point(spacing * (c % 3), spacing * (c / 3 % 3), spacing * (c / 9)));
   }
   return mesh;
 }

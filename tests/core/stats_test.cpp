@@ -15,6 +15,7 @@
 namespace holefill {
 namespace {
 
+using testing::append_mesh;
 using testing::make_icosphere;
 using testing::sphere_with_two_holes;
 
@@ -83,24 +84,15 @@ TEST(Stats, SurfaceCountsLeaveUnusedVerticesOutOfTheComponents) {
   // Unused vertices first, between pieces and last; two spheres and a triangle: three pieces of
   // surface whatever the unused vertices' order, while connected_components counts each of them.
   Mesh mesh;
-  const auto append = [&mesh](const Mesh& part, const Point& offset) {
-    std::vector<VertexHandle> added;
-    for (const auto v : part.vertices()) added.push_back(mesh.add_vertex(part.point(v) + offset));
-    for (const auto f : part.faces()) {
-      std::vector<VertexHandle> corners;
-      for (const auto v : part.fv_range(f)) corners.push_back(added[v.idx()]);
-      mesh.add_face(corners);
-    }
-  };
   Mesh triangle;
   triangle.add_face(triangle.add_vertex(Point(0, 0, 0)), triangle.add_vertex(Point(1, 0, 0)),
                     triangle.add_vertex(Point(0, 1, 0)));
   mesh.add_vertex(Point(9, 9, 9));
   mesh.add_vertex(Point(8, 9, 9));
-  append(make_icosphere(1), Point(0, 0, 0));
+  append_mesh(mesh, make_icosphere(1), Point(0, 0, 0));
   mesh.add_vertex(Point(7, 9, 9));
-  append(triangle, Point(5, 0, 0));
-  append(make_icosphere(1), Point(0, 5, 0));
+  append_mesh(mesh, triangle, Point(5, 0, 0));
+  append_mesh(mesh, make_icosphere(1), Point(0, 5, 0));
   mesh.add_vertex(Point(6, 9, 9));
   const SurfaceCounts counts = surface_counts(mesh);
   EXPECT_EQ(counts.components, 3u);
@@ -115,22 +107,13 @@ TEST(Stats, ComponentsAreNumberedInTheOrderOfTheirFirstVertex) {
   // A lone vertex, a sphere, a triangle, another sphere: four components, labelled in that order.
   Mesh mesh;
   mesh.add_vertex(Point(9, 9, 9));
-  const auto append = [&mesh](const Mesh& part, const Point& offset) {
-    std::vector<VertexHandle> added;
-    for (const auto v : part.vertices()) added.push_back(mesh.add_vertex(part.point(v) + offset));
-    for (const auto f : part.faces()) {
-      std::vector<VertexHandle> corners;
-      for (const auto v : part.fv_range(f)) corners.push_back(added[v.idx()]);
-      mesh.add_face(corners);
-    }
-  };
   const Mesh sphere = make_icosphere(1);
   Mesh triangle;
   triangle.add_face(triangle.add_vertex(Point(0, 0, 0)), triangle.add_vertex(Point(1, 0, 0)),
                     triangle.add_vertex(Point(0, 1, 0)));
-  append(sphere, Point(0, 0, 0));
-  append(triangle, Point(5, 0, 0));
-  append(sphere, Point(0, 5, 0));
+  append_mesh(mesh, sphere, Point(0, 0, 0));
+  append_mesh(mesh, triangle, Point(5, 0, 0));
+  append_mesh(mesh, sphere, Point(0, 5, 0));
   EXPECT_EQ(connected_components(mesh), 4u);
   const std::vector<int> labels = component_labels(mesh);
   ASSERT_EQ(labels.size(), mesh.n_vertices());

@@ -6,6 +6,16 @@
 
 namespace holefill::testing {
 
+void append_mesh(Mesh& mesh, const Mesh& part, const Point& offset) {
+  std::vector<VertexHandle> added;
+  for (const auto v : part.vertices()) added.push_back(mesh.add_vertex(part.point(v) + offset));
+  for (const auto f : part.faces()) {
+    std::vector<VertexHandle> corners;
+    for (const auto v : part.fv_range(f)) corners.push_back(added[v.idx()]);
+    mesh.add_face(corners);
+  }
+}
+
 Mesh make_icosphere(int levels) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   std::vector<Point> points{{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},

@@ -13,6 +13,9 @@ namespace holefill::testing {
 // A unit sphere: an icosahedron subdivided `levels` times, projected to the sphere.
 Mesh make_icosphere(int levels);
 
+// Adds a copy of `part`, moved by `offset`, to `mesh` (its vertices and faces after the mesh's).
+void append_mesh(Mesh& mesh, const Mesh& part, const Point& offset);
+
 // A height field z = height(x, y) over [0,1]^2 sampled on an n x n vertex grid.
 Mesh make_grid(int n, const std::function<double(double, double)>& height);
 
