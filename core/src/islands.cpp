@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <nanoflann.hpp>
 #include <unordered_set>
 
 #include "holefill/stats.h"
+#include "point_cloud_tree.h"
 
 namespace holefill {
 namespace {
@@ -213,37 +213,20 @@ bool whole_piece_inside(const Loop& outer, const std::vector<Loop>& loops, std::
 // (1 + reach) times the hole's radius, and testing that for every pair took over a second
 // for 20,000 holes (bench/README.md). Loops without a finite centroid are not in the tree and
 // are candidates for every hole.
-struct LoopCentroids {
-  std::vector<Point> points;
-  std::vector<int> loop;  // the loop of each point
-
-  std::size_t kdtree_get_point_count() const { return points.size(); }
-  double kdtree_get_pt(std::uint32_t i, std::size_t axis) const {
-    return points[i][static_cast<int>(axis)];
-  }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
-};
-using CentroidTree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, LoopCentroids>,
-                                        LoopCentroids, 3, std::uint32_t>;
-
 class LoopsNear {
  public:
   LoopsNear(const std::vector<Loop>& loops, const IslandOptions& options)
-      : loops_(loops), reach_(options.reach), tree_(3, centroids_) {
+      : loops_(loops), reach_(options.reach), tree_(3, cloud_) {
     for (std::size_t i = 0; i < loops.size(); ++i) {
       const Point& c = loops[i].hole->centroid;
       if (std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2])) {
-        centroids_.points.push_back(c);
-        centroids_.loop.push_back(static_cast<int>(i));
+        centroids_.push_back(c);
+        loop_of_centroid_.push_back(static_cast<int>(i));
       } else {
         unplaced_.push_back(static_cast<int>(i));
       }
     }
-    if (!centroids_.points.empty()) tree_.buildIndex();
+    if (!centroids_.empty()) tree_.buildIndex();
   }
 
   // Ascending, every loop that relation(loops[outer], loop) does not rule out by distance (and a
@@ -260,10 +243,10 @@ class LoopsNear {
       // Widened: the tree's squared distances round otherwise than relation()'s norm.
       const double search = radius * radius * (1.0 + 1e-9) + 1e-300;
       std::vector<std::pair<std::uint32_t, double>> within;
-      if (!centroids_.points.empty()) {
+      if (!centroids_.empty()) {
         tree_.radiusSearch(c.data(), search, within, nanoflann::SearchParams(32, 0.0f, false));
       }
-      for (const auto& [point, distance] : within) found.push_back(centroids_.loop[point]);
+      for (const auto& [point, distance] : within) found.push_back(loop_of_centroid_[point]);
       found.insert(found.end(), unplaced_.begin(), unplaced_.end());
       std::sort(found.begin(), found.end());
     }
@@ -274,9 +257,11 @@ class LoopsNear {
  private:
   const std::vector<Loop>& loops_;
   double reach_;
-  LoopCentroids centroids_;
-  CentroidTree tree_;
-  std::vector<int> unplaced_;
+  std::vector<Point> centroids_;          // of the loops with finite ones
+  std::vector<int> loop_of_centroid_;     // the loop of each of them
+  detail::PointCloud cloud_{centroids_};  // the tree keeps a reference to it
+  detail::PointCloudTree tree_;
+  std::vector<int> unplaced_;  // the loops without a finite centroid
 };
 
 void add_problem(IslandMap& map, int hole, const std::string& problem) {

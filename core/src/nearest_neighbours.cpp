@@ -2,27 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <nanoflann.hpp>
 #include <utility>
 
+#include "point_cloud_tree.h"
+
 namespace holefill::detail {
-namespace {
-
-// The points as nanoflann reads them.
-struct PointCloud {
-  const std::vector<Point>& points;
-  std::size_t kdtree_get_point_count() const { return points.size(); }
-  double kdtree_get_pt(std::uint32_t i, std::size_t axis) const { return points[i][axis]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box& /*box*/) const {
-    return false;  // let the tree compute it
-  }
-};
-
-using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>,
-                                                   PointCloud, 3, std::uint32_t>;
-
-}  // namespace
 
 std::vector<std::vector<int>> nearest_neighbours(const std::vector<Point>& points, int count) {
   const std::size_t n = points.size();
@@ -51,7 +35,7 @@ std::vector<std::vector<int>> nearest_neighbours(const std::vector<Point>& point
     return result;
   }
   const PointCloud cloud{points};
-  KdTree tree(3, cloud);
+  PointCloudTree tree(3, cloud);
   std::vector<std::uint32_t> indices(wanted + 1);
   std::vector<double> squared(wanted + 1);
   std::vector<std::pair<std::uint32_t, double>> within;
