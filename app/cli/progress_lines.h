@@ -27,7 +27,7 @@ class ProgressLines {
   std::string input_;
   bool always_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-  std::mutex mutex_;  // fill_holes reports from several threads at once
+  std::mutex mutex_;    // fill_holes reports from several threads at once
   int last_step_ = -1;  // the last line's phase (0, 1000) plus its percentage; under mutex_
   std::chrono::steady_clock::time_point last_line_;  // when it was printed; under mutex_
   Progress progress_;

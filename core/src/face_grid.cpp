@@ -76,7 +76,8 @@ std::vector<int> FaceGrid::near(const Box& box) const {
     // A column of cells along z has consecutive keys unless the z index wraps in the key's 21
     // bits: one binary search finds the whole column's entries instead of one per cell (lookups
     // were 13 % of filling 20,000 holes; this took a seventh off them: bench/README.md).
-    const auto& [low, high] = std::pair(range->low, range->high);
+    const auto& low = range->low;
+    const auto& high = range->high;
     const auto column_from = [&](std::uint64_t first, std::uint64_t last) {
       auto at = std::lower_bound(cells_.begin(), cells_.end(),
                                  std::pair<std::uint64_t, std::size_t>(first, 0));
@@ -88,7 +89,8 @@ std::vector<int> FaceGrid::near(const Box& box) const {
         if (last >= first && last - first == static_cast<std::uint64_t>(high[2] - low[2])) {
           column_from(first, last);
         } else {
-          for (auto z = low[2]; z <= high[2]; ++z) column_from(cell_key(x, y, z), cell_key(x, y, z));
+          for (auto z = low[2]; z <= high[2]; ++z)
+            column_from(cell_key(x, y, z), cell_key(x, y, z));
         }
       }
     }

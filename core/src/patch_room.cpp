@@ -24,7 +24,8 @@ PatchRoom patch_room(const Mesh& mesh, const Hole& hole, const PolygonTriangulat
     double area = 0.0;
     for (const auto& [i, m, k] : triangulation.triangles) {
       const Point a = mesh.point(hole.vertices[i]);
-      area += 0.5 * ((mesh.point(hole.vertices[m]) - a) % (mesh.point(hole.vertices[k]) - a)).norm();
+      area +=
+          0.5 * ((mesh.point(hole.vertices[m]) - a) % (mesh.point(hole.vertices[k]) - a)).norm();
     }
     const double triangle_area = std::sqrt(3.0) / 4.0 * length * length;
     const double density_faces = area / triangle_area;
@@ -42,8 +43,8 @@ PatchRoom patch_room(const Mesh& mesh, const Hole& hole, const PolygonTriangulat
 
 void reserve_patch_room(Mesh& mesh, const PatchRoom& added) {
   const auto beyond_room = [](std::size_t count, std::size_t more) { return more > count / 8; };
-  if (!beyond_room(mesh.n_vertices(), added.vertices) && !beyond_room(mesh.n_edges(), added.edges) &&
-      !beyond_room(mesh.n_faces(), added.faces)) {
+  if (!beyond_room(mesh.n_vertices(), added.vertices) &&
+      !beyond_room(mesh.n_edges(), added.edges) && !beyond_room(mesh.n_faces(), added.faces)) {
     return;
   }
   // At most twice the elements, as growing would make it: an estimate far too large (a flat hole

@@ -93,7 +93,8 @@ TEST(Islands, FindsTheCapLeftInsideAnAnnulusCut) {
 Mesh copies_apart(const Mesh& part, int count, double spacing) {
   Mesh mesh;
   for (int c = 0; c < count; ++c) {
-    testing::append_mesh(mesh, part, Point(spacing * (c % 3), spacing * (c / 3 % 3), spacing * (c / 9)));
+    testing::append_mesh(mesh, part,
+                         Point(spacing * (c % 3), spacing * (c / 3 % 3), spacing * (c / 9)));
   }
   return mesh;
 }

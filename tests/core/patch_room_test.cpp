@@ -52,9 +52,9 @@ TEST(PatchRoom, ATriangulationAddsItsFacesAndInnerEdgesExactly) {
 TEST(PatchRoom, ARefinedPatchIsEstimatedWithinAFactorOfTwo) {
   const auto [added, room] = filled_and_estimated(Stage::Refined);
   ASSERT_GT(added.vertices, 20u);  // refinement added vertices, as the estimate must foresee
-  for (const auto& [estimate, actual] : {std::pair{room.vertices, added.vertices},
-                                        std::pair{room.edges, added.edges},
-                                        std::pair{room.faces, added.faces}}) {
+  for (const auto& [estimate, actual] :
+       {std::pair{room.vertices, added.vertices}, std::pair{room.edges, added.edges},
+        std::pair{room.faces, added.faces}}) {
     EXPECT_GE(2 * estimate, actual);
     EXPECT_LE(estimate, 2 * actual);
   }
