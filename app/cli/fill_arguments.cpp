@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <utility>
 
 #include "number_checks.h"
@@ -10,7 +11,7 @@
 namespace holefill::cli {
 namespace {
 
-constexpr double kDegreesPerRadian = 180.0 / M_PI;
+constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 constexpr std::int64_t kNoLimit = std::numeric_limits<std::int64_t>::max();
 
 const std::vector<std::pair<std::string, Stage>> kStages{

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "holefill/islands.h"
 #include "holefill/stats.h"
@@ -17,7 +18,7 @@ std::string text_of(const Json& document) {
 
 Json options_json(const FillOptions& o) {
   return {{"weight", to_string(o.triangulate.weight)},
-          {"fold_limit_deg", o.triangulate.fold_limit * 180.0 / M_PI},
+          {"fold_limit_deg", o.triangulate.fold_limit * 180.0 / std::numbers::pi},
           {"restricted_above", o.triangulate.restricted.above_edges},
           {"tau", o.refine.tau},
           {"remesh", o.refine.remesh},

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <numbers>
 #include <string>
 #include <thread>
 #include <utility>
@@ -18,7 +19,7 @@
 namespace holefill::bench {
 namespace {
 
-constexpr double kDegrees = 180.0 / M_PI;
+constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 // Best of `repeats` runs, in seconds: the least disturbed by the rest of the machine.
 double best_time(int repeats, const std::function<void()>& work) {

@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <unordered_set>
 
 namespace holefill::quality {
 namespace {
 
-constexpr double kDegrees = 180.0 / M_PI;
+constexpr double kDegrees = 180.0 / std::numbers::pi;
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Closest point to p on triangle (a, b, c), by the region of the triangle's plane p projects

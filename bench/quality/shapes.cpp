@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <vector>
 
 #include "test_meshes.h"
@@ -27,9 +28,9 @@ Mesh make_star_shape(int levels, const std::function<double(const Point&)>& radi
 Mesh make_torus(double major, double minor, int around, int tube) {
   Mesh mesh;
   for (int i = 0; i < around; ++i) {
-    const double u = 2.0 * M_PI * i / around;
+    const double u = 2.0 * std::numbers::pi * i / around;
     for (int j = 0; j < tube; ++j) {
-      const double v = 2.0 * M_PI * j / tube;
+      const double v = 2.0 * std::numbers::pi * j / tube;
       const double ring = major + minor * std::cos(v);
       mesh.add_vertex(Point(ring * std::cos(u), ring * std::sin(u), minor * std::sin(v)));
     }

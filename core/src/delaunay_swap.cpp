@@ -1,6 +1,7 @@
 #include "delaunay_swap.h"
 
 #include <cmath>
+#include <numbers>
 
 #include "geometry.h"
 
@@ -41,7 +42,7 @@ bool should_swap_quad(const Point& a, const Point& b, const Point& c, const Poin
   // the opposite-angle sum keeps relaxation from swapping an edge back and forth. The margin
   // keeps co-circular configurations still.
   constexpr double kMargin = 1e-9;
-  return opposite_now > M_PI + kMargin && opposite_swapped < opposite_now - kMargin;
+  return opposite_now > std::numbers::pi + kMargin && opposite_swapped < opposite_now - kMargin;
 }
 
 }  // namespace holefill::detail

@@ -3,6 +3,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <cmath>
+#include <numbers>
 #include <unordered_map>
 #include <vector>
 
@@ -14,7 +15,7 @@ namespace {
 // Cotangents are clamped to the cotangent of 1 degree: a sliver triangle must not give one edge
 // a weight thousands of times its neighbours' (which ruins the conditioning), and a zero-area
 // triangle must not give an infinite one.
-const double kMaxCotangent = 1.0 / std::tan(M_PI / 180.0);
+const double kMaxCotangent = 1.0 / std::tan(std::numbers::pi / 180.0);
 // A vertex whose area is below this fraction of the mean area is degenerate (M^-1 would blow up).
 constexpr double kMinRelativeArea = 1e-12;
 // Smallest to largest LDLT pivot below this: the system is numerically singular.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -60,7 +61,7 @@ FlipQuad quad_of(const Mesh& mesh, EdgeHandle e) {
 // A flip (or a move) may make the smallest angle of the triangles it changes worse, for the
 // valence's sake, but not below this (unless it was already): fairing a patch with slivers in it
 // can squeeze them further.
-constexpr double kSliverAngle = 20.0 * M_PI / 180.0;
+constexpr double kSliverAngle = 20.0 * std::numbers::pi / 180.0;
 
 // The flip keeps the surface's shape: both new triangles are proper, face the way the old pair
 // did, bend against each other no more than allowed, and are no slivers.
@@ -91,7 +92,7 @@ class PatchRemesher {
         patch_(patch),
         tags_(mesh),
         patch_faces_(patch),
-        max_dihedral_(options.max_flip_dihedral_deg * M_PI / 180.0) {
+        max_dihedral_(options.max_flip_dihedral_deg * std::numbers::pi / 180.0) {
     for (const auto v : patch.boundary) {
       target_[v.idx()] = target_valence_in(mesh, patch_faces_, v);
     }
@@ -188,7 +189,7 @@ class PatchRemesher {
   }
 
   double fan_min_angle(VertexHandle v) const {
-    double smallest = M_PI;
+    double smallest = std::numbers::pi;
     for (const auto f : mesh_.vf_range(v)) {
       std::array<Point, 3> p;
       int c = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <unordered_set>
 #include <vector>
 
@@ -11,7 +12,7 @@
 
 namespace holefill {
 namespace {
-constexpr double kDegrees = 180.0 / M_PI;
+constexpr double kDegrees = 180.0 / std::numbers::pi;
 }
 
 PatchStats patch_stats(const Mesh& mesh, const Patch& patch) {
@@ -21,7 +22,7 @@ PatchStats patch_stats(const Mesh& mesh, const Patch& patch) {
   for (const auto v : patch.new_vertices) ++stats.valence_histogram[mesh.valence(v)];
 
   std::unordered_set<int> edges;
-  double min_angle = patch.faces.empty() ? 0.0 : M_PI, angle_sum = 0.0;
+  double min_angle = patch.faces.empty() ? 0.0 : std::numbers::pi, angle_sum = 0.0;
   for (const auto f : patch.faces) {
     auto fv = mesh.cfv_iter(f);
     const Point& a = mesh.point(*fv);

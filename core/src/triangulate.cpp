@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <numbers>
 
 #include "dp_step.h"
 #include "full_search.h"
@@ -46,7 +47,7 @@ geometry::TriangleMeasures geometry::measure_triangle(const Point& a, const Poin
 }
 
 double geometry::angle_between_normals(const Point& n1, const Point& n2) {
-  if (is_zero(n1) || is_zero(n2)) return M_PI;
+  if (is_zero(n1) || is_zero(n2)) return std::numbers::pi;
   return std::atan2(OpenMesh::cross(n1, n2).norm(), OpenMesh::dot(n1, n2));
 }
 
@@ -66,7 +67,7 @@ WeightValue weight_value(const TriangulationQuality& quality, const TriangulateO
 TriangulationQuality evaluate_triangulation(const HolePolygon& polygon,
                                             const std::vector<std::array<int, 3>>& triangles) {
   TriangulationQuality q;
-  q.min_angle = triangles.empty() ? 0.0 : M_PI;
+  q.min_angle = triangles.empty() ? 0.0 : std::numbers::pi;
   const int n = static_cast<int>(polygon.points.size());
   std::map<std::pair<int, int>, Point> first_normal_on_edge;
   for (const auto& t : triangles) {

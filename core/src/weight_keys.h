@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 #if defined(__SSE2__) && defined(__x86_64__)
 #include <emmintrin.h>
@@ -131,8 +132,8 @@ struct MaxMinWeight {
   }
   static MaxMinWeight with_fold_limit(double fold_limit) {
     MaxMinWeight weight;
-    weight.fold_lane =
-        weight_key::dihedral_lane(weight_key::chord_of_angle(std::clamp(fold_limit, 0.0, M_PI)));
+    weight.fold_lane = weight_key::dihedral_lane(
+        weight_key::chord_of_angle(std::clamp(fold_limit, 0.0, std::numbers::pi)));
     return weight;
   }
   std::uint64_t angle_key(double tangent) const {

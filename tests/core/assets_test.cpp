@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <numbers>
 
 #include "holefill/fill.h"
 #include "holefill/holes.h"
@@ -66,7 +67,7 @@ TEST(MaxMinFoldLimit, KeepsTheSpherePatchUnfolded) {
     options.last_stage = Stage::Triangulated;
     return fill_hole(mesh, holes[0], options).stats.max_dihedral_deg;
   };
-  EXPECT_GT(max_dihedral_deg(M_PI), 90.0);
+  EXPECT_GT(max_dihedral_deg(std::numbers::pi), 90.0);
   EXPECT_LT(max_dihedral_deg(kDefaultFoldLimit), 90.0);
 }
 

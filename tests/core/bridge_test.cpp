@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 #include "holefill/fill.h"
 #include "holefill/holes.h"
@@ -185,7 +186,7 @@ TEST(Bridge, JoinsATubeCutInTwo) {
   std::vector<VertexHandle> at;
   for (int j = 0; j <= kAlong; ++j) {
     for (int i = 0; i < kAround; ++i) {
-      const double angle = 2.0 * M_PI * i / kAround;
+      const double angle = 2.0 * std::numbers::pi * i / kAround;
       at.push_back(before.add_vertex(Point(std::cos(angle), std::sin(angle), 0.1 * j)));
     }
   }

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <random>
 #include <thread>
 
@@ -23,7 +24,8 @@ namespace {
 HolePolygon regular_polygon(int n) {
   HolePolygon polygon;
   for (int i = 0; i < n; ++i) {
-    polygon.points.emplace_back(std::cos(2.0 * M_PI * i / n), std::sin(2.0 * M_PI * i / n), 0.0);
+    polygon.points.emplace_back(std::cos(2.0 * std::numbers::pi * i / n),
+                                std::sin(2.0 * std::numbers::pi * i / n), 0.0);
   }
   polygon.outside_normals.assign(n, Point(0, 0, 1));
   return polygon;
@@ -53,7 +55,7 @@ std::vector<HolePolygon> test_holes() {
 TEST(FullSearch, GivesTheSameTriangulationOnAnyNumberOfThreads) {
   for (const auto& polygon : test_holes()) {
     for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}) {
-      for (const double fold_limit : {kDefaultFoldLimit, M_PI}) {
+      for (const double fold_limit : {kDefaultFoldLimit, std::numbers::pi}) {
         TriangulateOptions serial{weight, fold_limit};
         serial.threads = 1;
         const auto expected = triangulate_polygon(polygon, serial);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string_view>
 
 #include "holefill/errors.h"
@@ -225,7 +226,7 @@ TEST(IoMeshBuilding, ManyPinchedFansAroundOneVertexMakeOneConsistentLoop) {
   constexpr int kFans = 300;
   std::string text = "v 0 0 0\n";
   for (int i = 0; i < kFans; ++i) {
-    const double a = 2 * M_PI * i / kFans, b = a + M_PI / kFans;
+    const double a = 2 * std::numbers::pi * i / kFans, b = a + std::numbers::pi / kFans;
     text += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\nv " +
             std::to_string(std::cos(b)) + " " + std::to_string(std::sin(b)) + " 0.1\n";
   }

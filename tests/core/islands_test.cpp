@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "holefill/fill.h"
@@ -207,13 +208,13 @@ TEST(Islands, RandomBlobsWithIslandsCloseIntoOneSphere) {
     auto radius = [=](const Point& d) {
       return 1.0 + a * std::sin(c * d[0] + b) * std::cos(c * d[1]);
     };
-    const Point axis = tilted(M_PI * unit(rng), 2.0 * M_PI * unit(rng));
+    const Point axis = tilted(std::numbers::pi * unit(rng), 2.0 * std::numbers::pi * unit(rng));
     const Point side = OpenMesh::cross(axis, Point(0.3, 0.5, 0.8)).normalized();
     const Point other_side = OpenMesh::cross(axis, side);
     const int islands = 1 + trial % 3;
     std::vector<Cap> caps;
     for (int i = 0; i < islands; ++i) {
-      const double azimuth = 2.0 * M_PI * (i + 0.2 * unit(rng)) / islands;
+      const double azimuth = 2.0 * std::numbers::pi * (i + 0.2 * unit(rng)) / islands;
       const double offset = islands == 1 ? 0.2 * unit(rng) : 0.42;
       caps.push_back({(axis + offset * (std::cos(azimuth) * side + std::sin(azimuth) * other_side))
                           .normalized(),

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 namespace holefill {
@@ -41,7 +42,8 @@ std::vector<std::vector<Point>> point_sets() {
   // Ties everywhere: a regular polygon, an integer grid, and repeated points.
   std::vector<Point> regular, grid, repeated;
   for (int i = 0; i < 64; ++i) {
-    regular.emplace_back(std::cos(2.0 * M_PI * i / 64), std::sin(2.0 * M_PI * i / 64), 0.0);
+    regular.emplace_back(std::cos(2.0 * std::numbers::pi * i / 64),
+                         std::sin(2.0 * std::numbers::pi * i / 64), 0.0);
     grid.emplace_back(i % 8, i / 8, 0.0);
     repeated.emplace_back(i % 5, 0.0, 0.0);
   }

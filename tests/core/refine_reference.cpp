@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 #include <sstream>
 
 #include "patch_face_set.h"
@@ -107,7 +108,7 @@ bool split_face(Mesh& mesh, Patch& patch, detail::PatchFaceSet& patch_faces, Fac
 bool swap_by_angles(const Point& a, const Point& b, const Point& c, const Point& d) {
   const double now = angle_at(c, a, b) + angle_at(d, a, b);
   const double swapped = angle_at(a, c, d) + angle_at(b, c, d);
-  return now > M_PI + 1e-9 && swapped < now - 1e-9;
+  return now > std::numbers::pi + 1e-9 && swapped < now - 1e-9;
 }
 
 std::size_t reference_relax_patch_edges(Mesh& mesh, const Patch& patch) {

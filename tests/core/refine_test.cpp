@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <set>
 
@@ -84,10 +85,10 @@ TEST(Refine, SwapTestFollowsTheOppositeAngleRule) {
       const double lift = trial % 2 ? 0.2 * unit(rng) : 0.0;
       return Point(radius * std::cos(angle), radius * std::sin(angle), lift);
     };
-    const Point a = on_circle(M_PI * (0.5 + 0.4 * unit(rng)), 1.0);
-    const Point b = on_circle(-M_PI * (0.5 + 0.4 * unit(rng)), 1.0);
-    const Point c = on_circle(M_PI * (0.15 * unit(rng)), 1.0 + near);
-    const Point d = on_circle(M_PI * (1.0 + 0.15 * unit(rng)), 1.0 - near);
+    const Point a = on_circle(std::numbers::pi * (0.5 + 0.4 * unit(rng)), 1.0);
+    const Point b = on_circle(-std::numbers::pi * (0.5 + 0.4 * unit(rng)), 1.0);
+    const Point c = on_circle(std::numbers::pi * (0.15 * unit(rng)), 1.0 + near);
+    const Point d = on_circle(std::numbers::pi * (1.0 + 0.15 * unit(rng)), 1.0 - near);
     const bool expected = testing::swap_by_angles(a, b, c, d);
     EXPECT_EQ(should_swap_quad_edge(a, b, c, d), expected) << "trial " << trial;
     swaps += expected;
@@ -106,7 +107,7 @@ TEST(Refine, SwapTestFollowsTheOppositeAngleRuleOnThinQuads) {
   for (int trial = 0; trial < 4000; ++trial) {
     const double alpha = 1e-5 * std::pow(10.0, 3.5 * unit(rng));
     const double excess = (trial % 2 ? 1.0 : -1.0) * std::pow(10.0, -10.0 + 8.0 * unit(rng));
-    const double beta = M_PI - alpha + excess;
+    const double beta = std::numbers::pi - alpha + excess;
     const double fold = trial % 3 ? 0.0 : 0.01 * unit(rng);
     const Point a(-1.0, 0.0, 0.0), b(1.0, 0.0, 0.0);
     const Point c(0.3 * unit(rng), 1.0 / std::tan(alpha / 2.0), fold);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <set>
 
 #include "holefill/fill.h"
@@ -41,7 +42,7 @@ TEST(Stats, PatchStatsAgreeWithTheLawOfCosinesHeronAndCountedNeighbours) {
   }
   EXPECT_EQ(stats.valence_histogram, valences);
 
-  double smallest = M_PI, sum_of_smallest = 0.0, area = 0.0, largest_dihedral = 0.0;
+  double smallest = std::numbers::pi, sum_of_smallest = 0.0, area = 0.0, largest_dihedral = 0.0;
   std::set<EdgeHandle> edges;
   for (const auto f : fill.patch.faces) {
     std::vector<Point> p;
@@ -62,7 +63,7 @@ TEST(Stats, PatchStatsAgreeWithTheLawOfCosinesHeronAndCountedNeighbours) {
     const Point n0 = mesh.calc_face_normal(f0), n1 = mesh.calc_face_normal(f1);
     largest_dihedral = std::max(largest_dihedral, std::acos(std::clamp(n0 | n1, -1.0, 1.0)));
   }
-  const double degrees = 180.0 / M_PI;
+  const double degrees = 180.0 / std::numbers::pi;
   EXPECT_NEAR(stats.min_angle_deg, smallest * degrees, 1e-6);
   EXPECT_NEAR(stats.mean_min_angle_deg, sum_of_smallest / fill.patch.faces.size() * degrees, 1e-6);
   EXPECT_NEAR(stats.max_dihedral_deg, largest_dihedral * degrees, 1e-6);

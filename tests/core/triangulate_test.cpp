@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <random>
 #include <set>
 
@@ -87,7 +88,7 @@ TEST(Triangulate, MaxMinMaximisesTheSmallestAngleLikeBruteForce) {
                                                   polygon.forbidden_chords.end());
     const auto candidates = all_triangulations(0, n - 1, forbidden, n);
     // The paper's order (no fold limit) maximises the smallest angle outright.
-    const auto dp = triangulate_polygon(polygon, {WeightKind::MaxMin, M_PI});
+    const auto dp = triangulate_polygon(polygon, {WeightKind::MaxMin, std::numbers::pi});
     ASSERT_EQ(dp.has_value(), !candidates.empty());
     if (!dp) continue;
     double best = 0.0;
@@ -109,7 +110,7 @@ TEST(Triangulate, EveryWeightIsOptimalUnderItsFullOrderOnQuadrilaterals) {
     const Triangles split_02{{0, 1, 2}, {0, 2, 3}}, split_13{{1, 2, 3}, {0, 1, 3}};
     const auto q02 = evaluate_triangulation(polygon, split_02);
     const auto q13 = evaluate_triangulation(polygon, split_13);
-    const TriangulateOptions maxmin_options{WeightKind::MaxMin, M_PI};
+    const TriangulateOptions maxmin_options{WeightKind::MaxMin, std::numbers::pi};
     const TriangulateOptions liepa_options{WeightKind::Liepa};
     const auto maxmin = triangulate_polygon(polygon, maxmin_options);
     const auto liepa = triangulate_polygon(polygon, liepa_options);
@@ -133,14 +134,14 @@ TEST(Triangulate, MaxMinOnPlanarConvexPolygonMatchesDelaunayMinAngle) {
   for (int trial = 0; trial < 20; ++trial) {
     const int n = 5 + trial;
     std::vector<double> angles;
-    for (int i = 0; i < n; ++i) angles.push_back(2.0 * M_PI * unit(rng));
+    for (int i = 0; i < n; ++i) angles.push_back(2.0 * std::numbers::pi * unit(rng));
     std::sort(angles.begin(), angles.end());
     HolePolygon polygon;
     for (const double a : angles) polygon.points.emplace_back(2.0 * std::cos(a), std::sin(a), 0.0);
     polygon.outside_normals.assign(n, Point(0, 0, 1));
 
     // Brute-force Delaunay: triangles whose circumcircle holds no other point.
-    double delaunay_min_angle = M_PI;
+    double delaunay_min_angle = std::numbers::pi;
     const auto& p = polygon.points;
     for (int i = 0; i < n; ++i) {
       for (int j = i + 1; j < n; ++j) {
@@ -207,13 +208,14 @@ TEST(Triangulate, PrunedSearchMatchesThePlainLoopOnLargeAndTiedHoles) {
   }
   HolePolygon regular;
   for (int i = 0; i < 40; ++i) {
-    regular.points.emplace_back(std::cos(2.0 * M_PI * i / 40), std::sin(2.0 * M_PI * i / 40), 0.0);
+    regular.points.emplace_back(std::cos(2.0 * std::numbers::pi * i / 40),
+                                std::sin(2.0 * std::numbers::pi * i / 40), 0.0);
   }
   regular.outside_normals.assign(40, Point(0, 0, 1));
   polygons.push_back(regular);
   for (const auto& polygon : polygons) {
     for (const auto weight : {WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}) {
-      for (const double fold_limit : {kDefaultFoldLimit, M_PI}) {
+      for (const double fold_limit : {kDefaultFoldLimit, std::numbers::pi}) {
         TriangulateOptions fast{weight, fold_limit}, plain{weight, fold_limit};
         fast.restricted.above_edges = plain.restricted.above_edges = 0;
         plain.prune = false;
@@ -309,7 +311,7 @@ TEST(RestrictedSearch, NeverBeatsTheFullSearchOnItsExactComponents) {
   for (int trial = 0; trial < 12; ++trial) {
     const int n = 60 + 20 * trial;
     const HolePolygon polygon = random_hole(n, rng);
-    TriangulateOptions area{WeightKind::Area}, maxmin{WeightKind::MaxMin, M_PI};
+    TriangulateOptions area{WeightKind::Area}, maxmin{WeightKind::MaxMin, std::numbers::pi};
     area.restricted.above_edges = maxmin.restricted.above_edges = 0;
     const auto full_area = triangulate_polygon(polygon, area);
     const auto restricted_area = triangulate_polygon_restricted(polygon, area);
@@ -329,7 +331,7 @@ TEST(RestrictedSearch, LargeHolesUseItAndSmallOnesDoNot) {
   options.restricted.above_edges = 100;  // 120 edges: restricted
   // A random polygon folds in places whatever the chords; the fallback to the full search on a
   // fold is tests/robust/large_hole_test.cpp's.
-  options.restricted.full_search_above_dihedral = M_PI;
+  options.restricted.full_search_above_dihedral = std::numbers::pi;
   const auto through_threshold = triangulate_polygon(polygon, options);
   const auto restricted = triangulate_polygon_restricted(polygon, options);
   ASSERT_TRUE(through_threshold && restricted);
@@ -408,7 +410,7 @@ TEST(Triangulate, CollinearPointsGiveFiniteWeightsAndAreAvoided) {
 TEST(Triangulate, MeasureTriangleGivesTheSmallestAngle) {
   // A 30-60-90 triangle.
   const auto m = geometry::measure_triangle({0, 0, 0}, {std::sqrt(3.0), 0, 0}, {0, 1, 0});
-  EXPECT_NEAR(m.min_angle, M_PI / 6.0, 1e-12);
+  EXPECT_NEAR(m.min_angle, std::numbers::pi / 6.0, 1e-12);
   EXPECT_NEAR(m.area, std::sqrt(3.0) / 2.0, 1e-12);
   EXPECT_FALSE(m.degenerate);
 }

@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -99,7 +100,7 @@ TEST_F(Dirty, ATerrainWithInteriorHolesKeepsExactlyItsBorderAndClosesEveryHole) 
 TEST_F(Dirty, ARuggedTerrainIsStillAHeightFieldWithABorder) {
   // Steep ridges: the surface has several times the area of its footprint.
   Soup soup = soup_of(make_grid(40, [](double x, double y) {
-    return 0.3 * std::sin(6 * M_PI * x) * std::sin(6 * M_PI * y);
+    return 0.3 * std::sin(6 * std::numbers::pi * x) * std::sin(6 * std::numbers::pi * y);
   }));
   soup = without(soup, [](const Point& c) { return std::hypot(c[0] - 0.5, c[1] - 0.5) < 0.12; });
   const Filled f = fill(soup, {"--keep-borders"});

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "fill_guarantees.h"
 #include "hole_triangulation.h"
@@ -16,7 +17,7 @@
 namespace holefill::testing {
 namespace {
 
-constexpr double kRightAngle = M_PI / 2;
+constexpr double kRightAngle = std::numbers::pi / 2;
 
 // A round hole of radius 0.3 cut from a wavy cells x cells grid (its outer border left out).
 struct StaircaseHole {
@@ -73,7 +74,7 @@ TEST(LargeHole, ARestrictedTriangulationThatFoldsIsReplacedByTheFullSearchs) {
 
   // Either switch keeps the restricted search's answer.
   TriangulateOptions never = options;
-  never.restricted.full_search_above_dihedral = M_PI;
+  never.restricted.full_search_above_dihedral = std::numbers::pi;
   EXPECT_EQ(triangulate_polygon(polygon, never)->triangles, restricted->triangles);
   TriangulateOptions no_fallback = options;
   no_fallback.restricted.full_search_fallback = false;

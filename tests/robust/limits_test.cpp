@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "cad_parts.h"
 #include "fill_guarantees.h"
@@ -84,7 +85,7 @@ TEST(Limits, TheRestrictedSearchJoinsEachVertexToFewChords) {
   constexpr int kEdges = 20000;
   HolePolygon polygon;
   for (int i = 0; i < kEdges; ++i) {
-    const double angle = 2.0 * M_PI * i / kEdges;
+    const double angle = 2.0 * std::numbers::pi * i / kEdges;
     polygon.points.emplace_back(std::cos(angle), std::sin(angle), 0.1 * std::sin(5.0 * angle));
     polygon.outside_normals.emplace_back(0.0, 0.0, 0.0);
   }

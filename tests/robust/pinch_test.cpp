@@ -1,6 +1,7 @@
 // Pinched loops: a loop passing twice through one vertex is filled so that the vertex
 // ends up with one fan of faces, whichever way the loop pairs the fans' sides there.
 #include <fstream>
+#include <numbers>
 
 #include "dirty_meshes.h"
 #include "fill_guarantees.h"
@@ -29,10 +30,10 @@ Pinched fill_all(const Mesh& mesh) {
 Mesh bowtie_of_fans() {
   Mesh mesh;
   const auto centre = mesh.add_vertex(Point(0, 0, 0));
-  for (const double start : {0.0, M_PI}) {
+  for (const double start : {0.0, std::numbers::pi}) {
     std::vector<VertexHandle> rim;
     for (int i = 0; i < 4; ++i) {
-      const double a = start + 0.25 * M_PI * i;
+      const double a = start + 0.25 * std::numbers::pi * i;
       rim.push_back(mesh.add_vertex(Point(std::cos(a), std::sin(a), 0.3 * std::sin(2 * a + 1))));
     }
     for (int i = 0; i < 3; ++i) mesh.add_face(centre, rim[i], rim[i + 1]);
@@ -63,7 +64,7 @@ Soup disk_with_three_gaps_at_its_centre() {
   auto at = [](int ring, int sector) { return 1 + (ring - 1) * kSectors + sector % kSectors; };
   for (int ring = 1; ring <= 3; ++ring) {
     for (int s = 0; s < kSectors; ++s) {
-      const double a = 2 * M_PI * s / kSectors;
+      const double a = 2 * std::numbers::pi * s / kSectors;
       disk.points.emplace_back(ring * std::cos(a), ring * std::sin(a), 0.05 * ring * ring);
     }
   }
@@ -115,7 +116,7 @@ TEST(PinchedLoops, GapsBetweenThreeFansAreSeparatedIntoHolesOfTheirOwnAndEachIsF
     if (fill.patch.hole_id == 0) continue;  // the rim, closed too
     for (const auto f : fill.patch.faces) {
       const Point c = p.after.calc_face_centroid(f);
-      const double sector = std::atan2(c[1], c[0]) / (2 * M_PI) * kSectors;
+      const double sector = std::atan2(c[1], c[0]) / (2 * std::numbers::pi) * kSectors;
       const double in_gap = std::fmod(sector + kSectors, 8.0);
       EXPECT_GE(in_gap, 0.0);
       EXPECT_LE(in_gap, 3.0) << "sector " << sector;

@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <map>
+#include <numbers>
 
 #include "dirty_meshes.h"
 #include "holefill/holes.h"
@@ -129,7 +130,7 @@ TEST_F(Stitch, ExactCoincidenceOnlyWithAZeroTolerance) {
 Soup three_fins() {
   Soup fins;
   for (int k = 0; k < 3; ++k) {
-    const double a = 2 * M_PI * k / 3;
+    const double a = 2 * std::numbers::pi * k / 3;
     const Point out(0, std::cos(a), std::sin(a));
     Soup strip;
     for (int i = 0; i < 4; ++i) {
@@ -366,7 +367,7 @@ TEST_F(Stitch, AVertexOnAnEdgeWhoseBorderDoesNotRunBackAlongItIsNoTJunction) {
 Soup fins_along_x_axis(std::initializer_list<double> angles) {
   Soup fins;
   for (const double degrees : angles) {
-    const double a = degrees * M_PI / 180.0;
+    const double a = degrees * std::numbers::pi / 180.0;
     const Point out(0, std::cos(a), std::sin(a));
     Soup fin{{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, Point(1, 0, 0) + out}, {{0, 3, 1}, {1, 3, 2}}};
     fins = append(std::move(fins), fin);

@@ -3,6 +3,7 @@
 // dropped near the holes), filled with random parameters, all at once or stepped hole by hole in
 // a random order like the viewer does; every fill must keep the guarantees.
 #include <map>
+#include <numbers>
 
 #include "fill_guarantees.h"
 #include "holefill/fill.h"
@@ -28,7 +29,7 @@ Soup torus(int around, int across, double r) {
   Soup soup;
   for (int i = 0; i < around; ++i) {
     for (int j = 0; j < across; ++j) {
-      const double u = 2 * M_PI * i / around, v = 2 * M_PI * j / across;
+      const double u = 2 * std::numbers::pi * i / around, v = 2 * std::numbers::pi * j / across;
       soup.points.emplace_back((1 + r * std::cos(v)) * std::cos(u),
                                (1 + r * std::cos(v)) * std::sin(u), r * std::sin(v));
     }
@@ -47,7 +48,7 @@ Soup tube(int around, int rings) {
   Soup soup;
   for (int k = 0; k <= rings; ++k) {
     for (int i = 0; i < around; ++i) {
-      const double u = 2 * M_PI * i / around;
+      const double u = 2 * std::numbers::pi * i / around;
       soup.points.emplace_back(std::cos(u), std::sin(u), 2.0 * k / rings);
     }
   }
@@ -143,7 +144,7 @@ FillOptions random_options(Rng& rng) {
   FillOptions options;
   options.triangulate.weight =
       std::array{WeightKind::MaxMin, WeightKind::Liepa, WeightKind::Area}[integer(rng, 0, 2)];
-  options.triangulate.fold_limit = uniform(rng, 0.5, M_PI);
+  options.triangulate.fold_limit = uniform(rng, 0.5, std::numbers::pi);
   options.refine.tau = uniform(rng, 0.7, 2.2);
   options.smooth.method = chance(rng, 0.3) ? SmoothMethod::Fair : SmoothMethod::Umbrella;
   options.smooth.iterations = integer(rng, 0, 25);

@@ -2,6 +2,7 @@
 // filled; every fill must keep the guarantees of fill_guarantees.h, each hole is either filled or
 // left exactly as it was with a reason, and the CLI's exit code says which happened.
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 #include "dirty_meshes.h"
@@ -148,7 +149,7 @@ TEST_F(Topology, AMoebiusStripLoadsWithItsConflictDetached) {
   Soup soup;
   const int segments = 24;
   for (int i = 0; i < segments; ++i) {
-    const double t = 2.0 * M_PI * i / segments;
+    const double t = 2.0 * std::numbers::pi * i / segments;
     for (const double s : {-0.3, 0.3}) {
       soup.points.emplace_back((1 + s * std::cos(t / 2)) * std::cos(t),
                                (1 + s * std::cos(t / 2)) * std::sin(t), s * std::sin(t / 2));
@@ -317,7 +318,7 @@ TEST_F(Topology, CollinearOrNearlyCoincidentBoundaryPointsGiveNoDegenerateTriang
 
   // Two boundary points 1e-7 apart (relative to a radius of 1).
   std::vector<double> angles;
-  for (int i = 0; i < 24; ++i) angles.push_back(2 * M_PI * i / 24);
+  for (int i = 0; i < 24; ++i) angles.push_back(2 * std::numbers::pi * i / 24);
   angles.insert(angles.begin() + 1, 1e-7);
   o = fill_file(band(angles), {}, HoleSelection{{0}, 0});
   ASSERT_EQ(o.fills.size(), 1u);
@@ -419,7 +420,7 @@ TEST_F(Topology, ASingleTriangleIsLeftAloneWithAReason) {
 Soup cone(int n) {
   Soup soup;
   for (int i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * i / n;
+    const double a = 2 * std::numbers::pi * i / n;
     soup.points.emplace_back(std::cos(a), std::sin(a), 0);
   }
   soup.points.emplace_back(0, 0, 1);

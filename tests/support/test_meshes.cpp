@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <numbers>
 
 namespace holefill::testing {
 
@@ -113,7 +114,7 @@ std::vector<Point> random_loop(int n, std::mt19937& rng, double noise, double wa
   std::uniform_real_distribution<double> jitter(-noise, noise);
   std::vector<Point> points;
   for (int i = 0; i < n; ++i) {
-    const double angle = 2.0 * M_PI * i / n + jitter(rng) * M_PI / n;
+    const double angle = 2.0 * std::numbers::pi * i / n + jitter(rng) * std::numbers::pi / n;
     const double radius = 1.0 + 0.5 * jitter(rng);
     points.emplace_back(radius * std::cos(angle), radius * std::sin(angle),
                         waviness * std::sin(3.0 * angle) + 0.3 * jitter(rng));

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,7 +45,7 @@ struct RestrictedSearch {
   // kMaxFullSearchEdges points: its chords follow the boundary, and along a long boundary with
   // steps (a hole cut from a scan's grid) every triangulation they hold folds over the steps.
   // pi or more: never.
-  double full_search_above_dihedral = M_PI / 2;
+  double full_search_above_dihedral = std::numbers::pi / 2;
   // false: the restricted search's answer stands, even when it finds nothing (the full search's
   // time grows with the cube of the edge count: ten seconds at 2,400 edges).
   bool full_search_fallback = true;

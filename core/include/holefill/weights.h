@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <string>
 
 namespace holefill {
@@ -29,7 +30,7 @@ std::string to_string(WeightKind kind);
 // Parses "maxmin", "liepa" or "area"; returns false for anything else.
 bool parse_weight(const std::string& text, WeightKind& kind);
 
-inline constexpr double kDefaultFoldLimit = M_PI / 4.0;
+inline constexpr double kDefaultFoldLimit = std::numbers::pi / 4.0;
 
 // The largest angle difference that quantisation can tie, radians, for the smallest angle and for
 // dihedral angles below 90 degrees. A weight's leading angle term (liepa's largest dihedral,
