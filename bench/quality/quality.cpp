@@ -277,12 +277,24 @@ bool fair_with_cgal(Mesh& mesh, const std::vector<FilledHole>& patches) {
 }
 #endif
 
-int run(int argc, char** argv) {
+// What the command line asks for, with the defaults filled in.
+struct Arguments {
   std::filesystem::path assets = HOLEFILL_QUALITY_ASSETS_DIR;
   std::vector<std::string> mesh_names, weight_names{"maxmin", "liepa", "area"}, smoothing_names;
   std::vector<std::vector<double>> cuts;
   unsigned seed = 1;
   std::optional<std::filesystem::path> write_dir;
+  bool help = false;  // --help: print the usage and stop (later arguments are not read)
+
+  bool wanted(const std::string& smoothing) const {
+    return std::find(smoothing_names.begin(), smoothing_names.end(), smoothing) !=
+           smoothing_names.end();
+  }
+};
+
+// Throws UsageError on an unknown argument or a missing value.
+Arguments parse_arguments(int argc, char** argv) {
+  Arguments a;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -290,46 +302,52 @@ int run(int argc, char** argv) {
       return argv[++i];
     };
     if (arg == "--assets") {
-      assets = value();
+      a.assets = value();
     } else if (arg == "--meshes") {
-      mesh_names = split(value());
+      a.mesh_names = split(value());
     } else if (arg == "--weights") {
-      weight_names = split(value());
+      a.weight_names = split(value());
     } else if (arg == "--smooth") {
-      smoothing_names = split(value());
+      a.smoothing_names = split(value());
     } else if (arg == "--cut") {
       std::vector<double> radii;
       for (const auto& r : split(value())) radii.push_back(std::stod(r));
-      cuts.push_back(radii);
+      a.cuts.push_back(radii);
     } else if (arg == "--seed") {
-      seed = static_cast<unsigned>(std::stoul(value()));
+      a.seed = static_cast<unsigned>(std::stoul(value()));
     } else if (arg == "--write") {
-      write_dir = value();
+      a.write_dir = value();
     } else if (arg == "-h" || arg == "--help") {
-      std::cout << kUsage;
-      return 0;
+      a.help = true;
+      return a;
     } else {
       throw UsageError{"unknown argument '" + arg + "'"};
     }
   }
-  if (cuts.empty()) cuts = {{3, 3, 3}, {7}};
-  if (smoothing_names.empty()) {
-    smoothing_names = {"umbrella",          "fair-cot-2",       "fair-uniform-2",
-                       "fair-cot-3",        "fair-uniform-3",   "umbrella+remesh",
-                       "fair-cot-2+remesh", "fair-cot-3+remesh"};
+  if (a.cuts.empty()) a.cuts = {{3, 3, 3}, {7}};
+  if (a.smoothing_names.empty()) {
+    a.smoothing_names = {"umbrella",          "fair-cot-2",       "fair-uniform-2",
+                         "fair-cot-3",        "fair-uniform-3",   "umbrella+remesh",
+                         "fair-cot-2+remesh", "fair-cot-3+remesh"};
 #ifdef HOLEFILL_QUALITY_WITH_CGAL
-    smoothing_names.push_back("cgal-fair");
-    smoothing_names.push_back("cgal");
+    a.smoothing_names.push_back("cgal-fair");
+    a.smoothing_names.push_back("cgal");
 #endif
-    smoothing_names.push_back("truth");
+    a.smoothing_names.push_back("truth");
   }
+  return a;
+}
+
+// The library's fills to run: each smoothing with each weight (cgal-fair stops after refinement;
+// cgal and truth are not the library's). Throws UsageError on an unknown name.
+std::vector<Method> methods_of(const Arguments& a) {
   std::vector<Method> methods;
-  for (const auto& smoothing : smoothing_names) {
+  for (const auto& smoothing : a.smoothing_names) {
     if (smoothing == "cgal-fair") {
 #ifndef HOLEFILL_QUALITY_WITH_CGAL
       throw UsageError{"this build has no CGAL"};
 #endif
-      for (const auto& weight : weight_names) {
+      for (const auto& weight : a.weight_names) {
         FillOptions options;
         options.last_stage = Stage::Refined;
         if (!parse_weight(weight, options.triangulate.weight)) {
@@ -347,80 +365,68 @@ int run(int argc, char** argv) {
     }
     auto options = smoothing_options(smoothing);
     if (!options) throw UsageError{"unknown smoothing '" + smoothing + "'"};
-    for (const auto& weight : weight_names) {
+    for (const auto& weight : a.weight_names) {
       if (!parse_weight(weight, options->triangulate.weight)) {
         throw UsageError{"unknown weight '" + weight + "'"};
       }
       methods.push_back({weight, smoothing, *options});
     }
   }
-  auto wanted = [&](const std::string& smoothing) {
-    return std::find(smoothing_names.begin(), smoothing_names.end(), smoothing) !=
-           smoothing_names.end();
-  };
-  if (write_dir) std::filesystem::create_directories(*write_dir);
+  return methods;
+}
 
-  std::vector<Row> rows;
-  for (const auto& shape : shapes(assets)) {
-    if (!mesh_names.empty() &&
-        std::find(mesh_names.begin(), mesh_names.end(), shape.name) == mesh_names.end()) {
-      continue;
+// Fills the holes of one cut of `shape` with every method (and CGAL, and the truth, when asked),
+// appending a row per fill to `rows` and writing each filled mesh when --write asks.
+void measure_cut(const Shape& shape, const Mesh& closed, const Truth& truth, const CutMesh& cut,
+                 const Arguments& a, const std::vector<Method>& methods, std::vector<Row>& rows) {
+  const auto loops = find_holes(cut.mesh);
+  const std::string sizes = hole_sizes(loops);
+  auto write = [&](const Mesh& mesh, const std::string& label) {
+    if (!a.write_dir) return;
+    std::string name = shape.name + "-" + sizes + "-" + label + ".obj";
+    std::replace(name.begin(), name.end(), '/', '_');
+    save_mesh(mesh, *a.write_dir / name);
+  };
+  for (const auto& method : methods) {
+    Mesh mesh = cut.mesh;
+    const auto fills = fill_holes(mesh, loops, method.options);
+    std::vector<FilledHole> patches;
+    std::size_t failed = 0, fell_back = 0;
+    for (const auto& fill : fills) {
+      failed += fill.failed();
+      fell_back += !fill.smoothing_note.empty();
+      patches.push_back({fill.patch.boundary, fill.patch.faces, fill.patch.new_vertices});
     }
-    const Mesh closed = shape.make();
-    const Truth truth(closed);
-    for (const auto& radii : cuts) {
-      std::string problem;
-      const auto cut = cut_holes(closed, radii, seed, &problem);
-      if (!cut) {
-        std::cerr << "holefill-quality: " << shape.name << ": " << problem << "\n";
-        continue;
-      }
-      const auto loops = find_holes(cut->mesh);
-      const std::string sizes = hole_sizes(loops);
-      auto write = [&](const Mesh& mesh, const std::string& label) {
-        if (!write_dir) return;
-        std::string name = shape.name + "-" + sizes + "-" + label + ".obj";
-        std::replace(name.begin(), name.end(), '/', '_');
-        save_mesh(mesh, *write_dir / name);
-      };
-      for (const auto& method : methods) {
-        Mesh mesh = cut->mesh;
-        const auto fills = fill_holes(mesh, loops, method.options);
-        std::vector<FilledHole> patches;
-        std::size_t failed = 0, fell_back = 0;
-        for (const auto& fill : fills) {
-          failed += fill.failed();
-          fell_back += !fill.smoothing_note.empty();
-          patches.push_back({fill.patch.boundary, fill.patch.faces, fill.patch.new_vertices});
-        }
-        std::string notes;
+    std::string notes;
 #ifdef HOLEFILL_QUALITY_WITH_CGAL
-        if (method.smoothing == "cgal-fair" && !fair_with_cgal(mesh, patches)) {
-          notes += "CGAL fairing failed ";
-        }
-#endif
-        if (failed) notes += std::to_string(failed) + " not filled ";
-        if (fell_back) notes += std::to_string(fell_back) + " fell back to umbrella";
-        rows.push_back({shape.name, sizes, method.weight, method.smoothing,
-                        measure(mesh, patches, truth), notes});
-        write(mesh, method.weight + "-" + method.smoothing);
-      }
-#ifdef HOLEFILL_QUALITY_WITH_CGAL
-      if (wanted("cgal")) {
-        std::size_t unfaired = 0;
-        std::vector<FilledHole> patches;
-        const Mesh filled = fill_with_cgal(cut->mesh, loops, patches, unfaired);
-        rows.push_back({shape.name, sizes, "CGAL", "CGAL", measure(filled, patches, truth),
-                        unfaired ? std::to_string(unfaired) + " not faired" : ""});
-        write(filled, "cgal");
-      }
-#endif
-      if (wanted("truth")) {
-        rows.push_back({shape.name, sizes, "–", "truth (cut faces)",
-                        measure(closed, truth_patches(closed, *cut, loops), truth), ""});
-      }
+    if (method.smoothing == "cgal-fair" && !fair_with_cgal(mesh, patches)) {
+      notes += "CGAL fairing failed ";
     }
+#endif
+    if (failed) notes += std::to_string(failed) + " not filled ";
+    if (fell_back) notes += std::to_string(fell_back) + " fell back to umbrella";
+    rows.push_back(
+        {shape.name, sizes, method.weight, method.smoothing, measure(mesh, patches, truth), notes});
+    write(mesh, method.weight + "-" + method.smoothing);
   }
+#ifdef HOLEFILL_QUALITY_WITH_CGAL
+  if (a.wanted("cgal")) {
+    std::size_t unfaired = 0;
+    std::vector<FilledHole> patches;
+    const Mesh filled = fill_with_cgal(cut.mesh, loops, patches, unfaired);
+    rows.push_back({shape.name, sizes, "CGAL", "CGAL", measure(filled, patches, truth),
+                    unfaired ? std::to_string(unfaired) + " not faired" : ""});
+    write(filled, "cgal");
+  }
+#endif
+  if (a.wanted("truth")) {
+    rows.push_back({shape.name, sizes, "–", "truth (cut faces)",
+                    measure(closed, truth_patches(closed, cut, loops), truth), ""});
+  }
+}
+
+// The summaries (the distance for every weight, the rest for the first) and the whole table.
+void print_results(const std::vector<Row>& rows, const std::vector<std::string>& weight_names) {
   const std::string& first_weight = weight_names.front();
   for (const auto& weight : weight_names) {
     print_pivot(
@@ -438,6 +444,35 @@ int run(int argc, char** argv) {
       [](const Quality& q) { return q.max_boundary_dihedral; }, true, 1);
   std::cout << "**Every measure**\n\n";
   print_table(rows);
+}
+
+int run(int argc, char** argv) {
+  const Arguments a = parse_arguments(argc, argv);
+  if (a.help) {
+    std::cout << kUsage;
+    return 0;
+  }
+  const std::vector<Method> methods = methods_of(a);
+  if (a.write_dir) std::filesystem::create_directories(*a.write_dir);
+  std::vector<Row> rows;
+  for (const auto& shape : shapes(a.assets)) {
+    if (!a.mesh_names.empty() &&
+        std::find(a.mesh_names.begin(), a.mesh_names.end(), shape.name) == a.mesh_names.end()) {
+      continue;
+    }
+    const Mesh closed = shape.make();
+    const Truth truth(closed);
+    for (const auto& radii : a.cuts) {
+      std::string problem;
+      const auto cut = cut_holes(closed, radii, a.seed, &problem);
+      if (!cut) {
+        std::cerr << "holefill-quality: " << shape.name << ": " << problem << "\n";
+        continue;
+      }
+      measure_cut(shape, closed, truth, *cut, a, methods, rows);
+    }
+  }
+  print_results(rows, a.weight_names);
   return 0;
 }
 
