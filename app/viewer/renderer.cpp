@@ -105,16 +105,22 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
   glDepthFunc(GL_LEQUAL);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
-  const glm::mat4 view = camera.view();
-  const glm::mat4 projection = camera.projection();
-  const float bias = 0.004f * layer.radius;
+  const ViewTransform transform{camera.view(), camera.projection(),
+                                camera.pixel_size_at_unit_depth(), 0.004f * layer.radius};
+  draw_surface(layer, transform, display);
+  draw_edges_and_dots(layer, transform, rect, display);
+  draw_outlines(layer, transform, rect, highlight);
+  glDisable(GL_DEPTH_TEST);
+}
 
+void Renderer::draw_surface(const MeshLayer& layer, const ViewTransform& transform,
+                            const DisplayOptions& display) {
   // The surface is pushed back a little so that edges and dots drawn on it win the depth test.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
   surface_program_.use();
-  surface_program_.set("u_view", view);
-  surface_program_.set("u_projection", projection);
+  surface_program_.set("u_view", transform.view);
+  surface_program_.set("u_projection", transform.projection);
   surface_program_.set("u_flat", display.flat ? 1 : 0);
   surface_program_.set("u_face_stages", 0);
   const glm::vec3 stage_colors[4] = {rgb(palette::kSurface), rgb(palette::kTriangulated),
@@ -122,12 +128,15 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
   surface_program_.set("u_stage_colors", stage_colors, 4);
   layer.surface.draw_surface(0);
   glDisable(GL_POLYGON_OFFSET_FILL);
+}
 
+void Renderer::draw_edges_and_dots(const MeshLayer& layer, const ViewTransform& transform,
+                                   const PixelRect& rect, const DisplayOptions& display) {
   solid_program_.use();
-  solid_program_.set("u_view", view);
-  solid_program_.set("u_projection", projection);
+  solid_program_.set("u_view", transform.view);
+  solid_program_.set("u_projection", transform.projection);
   solid_program_.set("u_depth_bias", 0.0f);
-  solid_program_.set("u_pixel_size", camera.pixel_size_at_unit_depth());
+  solid_program_.set("u_pixel_size", transform.pixel_size);
   if (display.wireframe) {
     // Lines fade out where they run closer than a few pixels apart (solid.vert); faint lines
     // leave the depth buffer to the surface.
@@ -151,19 +160,22 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
     // A dot at most a third of the patch's mean edge across.
     solid_program_.set("u_point_world_size", layer.patch_edge_length / 3.0f);
     solid_program_.set("u_viewport_height", static_cast<float>(rect.height));
-    solid_program_.set("u_depth_bias", bias);
+    solid_program_.set("u_depth_bias", transform.depth_bias);
     solid_program_.set("u_color", rgba(palette::kPatchVertex));
     layer.surface.draw_patch_vertices();
     glDisable(GL_PROGRAM_POINT_SIZE);
   }
+}
 
+void Renderer::draw_outlines(const MeshLayer& layer, const ViewTransform& transform,
+                             const PixelRect& rect, const Highlight& highlight) {
   line_program_.use();
-  line_program_.set("u_view", view);
-  line_program_.set("u_projection", projection);
+  line_program_.set("u_view", transform.view);
+  line_program_.set("u_projection", transform.projection);
   line_program_.set("u_viewport", glm::vec2(rect.width, rect.height));
   line_program_.set("u_width", 5.0f);
-  line_program_.set("u_depth_bias", bias);
-  line_program_.set("u_pixel_size", camera.pixel_size_at_unit_depth());
+  line_program_.set("u_depth_bias", transform.depth_bias);
+  line_program_.set("u_pixel_size", transform.pixel_size);
   line_program_.set("u_pixel_bias", kOutlinePixelBias);
   line_program_.set("u_selected", highlight.selected);
   const int joined = std::min<int>(static_cast<int>(highlight.joined->size()), kMaxJoined);
@@ -177,7 +189,6 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
   layer.boundary.draw();
   line_program_.set("u_color", rgba(palette::kBorder));
   layer.borders.draw();
-  glDisable(GL_DEPTH_TEST);
 }
 
 std::vector<std::uint8_t> Renderer::read_pixels(int width, int height) const {

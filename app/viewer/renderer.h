@@ -54,9 +54,25 @@ class Renderer {
   };
   static constexpr int kMaxJoined = 16;  // as in thick_line.frag; more are drawn as holes
 
+  // What the three passes of a view share: the camera's matrices, the world size of a pixel at
+  // unit depth, and how far dots and outlines are drawn toward the eye (world units).
+  struct ViewTransform {
+    glm::mat4 view;
+    glm::mat4 projection;
+    float pixel_size;
+    float depth_bias;
+  };
+
   void sync(Session& session);
+  // One view: the surface, then the wireframe and new-vertex dots, then the loops' outlines.
   void draw_view(const MeshLayer& layer, const Camera& camera, const PixelRect& rect,
                  int framebuffer_height, const DisplayOptions& display, const Highlight& highlight);
+  void draw_surface(const MeshLayer& layer, const ViewTransform& transform,
+                    const DisplayOptions& display);
+  void draw_edges_and_dots(const MeshLayer& layer, const ViewTransform& transform,
+                           const PixelRect& rect, const DisplayOptions& display);
+  void draw_outlines(const MeshLayer& layer, const ViewTransform& transform, const PixelRect& rect,
+                     const Highlight& highlight);
 
   GlProgram surface_program_;
   GlProgram solid_program_;
