@@ -1,6 +1,6 @@
 // holefill-make-big-mesh: a closed, gently wavy torus of about FACES triangles with HOLES small
 // square holes spread over it, written as a binary little-endian PLY (float coordinates, as
-// scanners write) or, for a .obj name, as an OBJ: the big meshes of bench/README.md, generated
+// scanners write) or, for a .obj name, as an OBJ: the big meshes of bench/NOTEBOOK.md, generated
 // rather than stored.
 //
 //   holefill-make-big-mesh FACES HOLES OUT.(ply|obj)

@@ -139,7 +139,7 @@ void BM_FillBentSheet(benchmark::State& state) {
 // A round hole cut from a wavy range(0) x range(0) grid, whose border is a staircase of the grid's
 // triangles: the weight's best plan crosses the steps, so the avoidance forbids the chords through
 // the mesh (chords_through_mesh) and solves again. At range(0) = 100 the hole has about 200
-// edges; the 1,200-edge hole of bench/README.md took minutes before the chords were found
+// edges; the 1,200-edge hole of bench/NOTEBOOK.md took minutes before the chords were found
 // along a bounding-box hierarchy.
 void BM_FillStaircaseHole(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));

@@ -1,4 +1,4 @@
-// holefill-cgal-fill: CGAL's side of bench/README.md's "Big meshes, whole process". Reads a PLY
+// holefill-cgal-fill: CGAL's side of bench/NOTEBOOK.md's "Big meshes, whole process". Reads a PLY
 // into a CGAL Surface_mesh, fills every border cycle with
 // CGAL::Polygon_mesh_processing::triangulate_and_refine_hole (default parameters) and writes a
 // PLY, so that `/usr/bin/time` measures what `holefill fill` does: read, fill, write.

@@ -75,7 +75,7 @@ std::vector<int> FaceGrid::near(const Box& box) const {
   } else {
     // A column of cells along z has consecutive keys unless the z index wraps in the key's 21
     // bits: one binary search finds the whole column's entries instead of one per cell (lookups
-    // were 13 % of filling 20,000 holes; this took a seventh off them: bench/README.md).
+    // were 13 % of filling 20,000 holes; this took a seventh off them: bench/NOTEBOOK.md).
     const auto& low = range->low;
     const auto& high = range->high;
     const auto column_from = [&](std::uint64_t first, std::uint64_t last) {

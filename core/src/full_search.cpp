@@ -27,13 +27,13 @@ namespace holefill::detail {
 namespace {
 
 // Below this many edges a search takes under a few milliseconds on one core, and starting and
-// feeding threads costs more than it saves (bench/README.md).
+// feeding threads costs more than it saves (bench/NOTEBOOK.md).
 constexpr int kParallelMinEdges = 120;
 
 // Rows per strip: a strip reads each column's tables once for this many cells, and the strip's own
 // rows (the left sides of its candidates) stay in the second-level cache up to thousands of edges.
 // At 2,000 edges 8 rows took 3.3-3.5 s on one thread, 16 rows 3.0-3.1 s, single rows 4.6-5.3 s;
-// at 500 edges the three are the same within the machine's noise (bench/README.md).
+// at 500 edges the three are the same within the machine's noise (bench/NOTEBOOK.md).
 constexpr int kStripRows = 16;
 
 // Cell (i, k), 0 <= i < k < n, of the triangular tables, stored row by row (row i holds
@@ -282,7 +282,7 @@ class HelperThreads {
 // The cores that other processes leave to this search (the calling thread counted as free), by
 // the one-minute load average. On a busy machine the rows' threads are descheduled in turn and
 // the rows wait for each other: two threads sharing two cores with five other processes took
-// 1.5x as long as one thread (bench/README.md).
+// 1.5x as long as one thread (bench/NOTEBOOK.md).
 int idle_cores() {
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   double load = 0.0;

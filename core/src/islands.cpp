@@ -211,7 +211,7 @@ bool whole_piece_inside(const Loop& outer, const std::vector<Loop>& loops, std::
 // The loops' centroids in a k-d tree, so that each hole is compared with the loops near it
 // rather than with every loop: relation() rules out at once every loop whose centroid lies beyond
 // (1 + reach) times the hole's radius, and testing that for every pair took over a second
-// for 20,000 holes (bench/README.md). Loops without a finite centroid are not in the tree and
+// for 20,000 holes (bench/NOTEBOOK.md). Loops without a finite centroid are not in the tree and
 // are candidates for every hole.
 class LoopsNear {
  public:
