@@ -119,7 +119,8 @@ TEST_F(Attributes, PlyRoundTripsKeepEveryPropertyInItsEncodingAndTypes) {
     EXPECT_EQ(layout.vertex[0].type, ScalarType::UInt8);
     EXPECT_EQ(layout.vertex[3].type, ScalarType::Float32);
     ASSERT_EQ(layout.face.size(), 1u);
-    EXPECT_EQ(layout.position_type, ScalarType::Float32);
+    EXPECT_EQ(layout.position_types,
+              (std::array{ScalarType::Float32, ScalarType::Float32, ScalarType::Float32}));
     save_mesh(original, dir_ / "out.ply");
     const std::string written = read(dir_ / "out.ply");
     EXPECT_NE(written.find("format " + format + " 1.0"), std::string::npos);

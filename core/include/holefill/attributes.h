@@ -44,7 +44,8 @@ struct AttributeLayout {
   std::vector<ScalarAttribute> vertex;  // in the file's order (positions excluded)
   std::vector<ScalarAttribute> face;    // scalar face properties, in the file's order
   // How the source PLY stored positions and faces, so that a PLY is written back alike.
-  ScalarType position_type = ScalarType::Float64;
+  std::array<ScalarType, 3> position_types{ScalarType::Float64, ScalarType::Float64,
+                                           ScalarType::Float64};  // x, y, z
   ScalarType face_count_type = ScalarType::UInt8;
   ScalarType face_index_type = ScalarType::Int32;
   FileEncoding encoding = FileEncoding::Ascii;
@@ -60,6 +61,12 @@ void set_attribute_layout(Mesh& mesh, const AttributeLayout& layout);
 // The property of a vertex or face attribute; invalid when the mesh has none of that name.
 OpenMesh::VPropHandleT<double> vertex_attribute(const Mesh& mesh, const std::string& name);
 OpenMesh::FPropHandleT<double> face_attribute(const Mesh& mesh, const std::string& name);
+// The properties of `attributes` (a layout's vertex or face list), in its order, found in one pass
+// over the mesh's properties (invalid where missing): a lookup by name passes over them all.
+std::vector<OpenMesh::VPropHandleT<double>> vertex_attributes(
+    const Mesh& mesh, const std::vector<ScalarAttribute>& attributes);
+std::vector<OpenMesh::FPropHandleT<double>> face_attributes(
+    const Mesh& mesh, const std::vector<ScalarAttribute>& attributes);
 
 // Values for the patch's new vertices and its faces: scalar vertex attributes (colours, quality,
 // ...) are interpolated harmonically (umbrella weights) from the hole's boundary, normals

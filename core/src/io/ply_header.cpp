@@ -1,6 +1,7 @@
 #include "ply_header.h"
 
 #include <algorithm>
+#include <unordered_set>
 
 #include "soup.h"
 #include "text_scan.h"
@@ -106,6 +107,9 @@ PlyHeader parse_ply_header(std::string_view bytes, std::uint64_t file_size, cons
   }
   if (magic != "ply") fail(path, "does not start with the line 'ply'");
   bool have_format = false, ended = false;
+  // Names seen, so that a repeated one is found without a pass over the others (200,000
+  // elements took 48 s that way).
+  std::unordered_set<std::string> element_names, property_names;
   while (!ended && lines.next(line)) {
     const std::string where = at_line(lines.number());
     std::string_view rest = line;
@@ -135,11 +139,10 @@ PlyHeader parse_ply_header(std::string_view bytes, std::uint64_t file_size, cons
       if (!take_token(rest).empty()) {
         fail(path, where + "unexpected text after the element count in " + quoted(line));
       }
-      for (const auto& earlier : header.elements) {
-        if (earlier.name == element.name) {
-          fail(path, where + "a second '" + element.name + "' element");
-        }
+      if (!element_names.insert(element.name).second) {
+        fail(path, where + "a second '" + element.name + "' element");
       }
+      property_names.clear();
       header.elements.push_back(std::move(element));
     } else if (keyword == "property") {
       if (header.elements.empty()) fail(path, where + "a property before any element");
@@ -161,7 +164,15 @@ PlyHeader parse_ply_header(std::string_view bytes, std::uint64_t file_size, cons
       if (!take_token(rest).empty()) {
         fail(path, where + "unexpected text after the property name in " + quoted(line));
       }
-      header.elements.back().properties.push_back(std::move(property));
+      PlyElement& element = header.elements.back();
+      if (element.properties.size() == kMaxPlyProperties) {
+        fail(path, where + "the '" + element.name + "' element has more than " +
+                       std::to_string(kMaxPlyProperties) +
+                       " properties, the most holefill reads (kMaxPlyProperties in "
+                       "core/src/io/ply_header.h)");
+      }
+      if (!property_names.insert(property.name).second) property.repeats_line = lines.number();
+      element.properties.push_back(std::move(property));
     } else if (keyword == "end_header") {
       ended = true;
     } else {

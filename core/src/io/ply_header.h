@@ -48,7 +48,16 @@ struct PlyProperty {
   PlyType type = PlyType::Float32;  // of the items, for a list
   bool is_list = false;
   PlyType count_type = PlyType::UInt8;
+  // An earlier property of the element has this name: its values are read past, not kept (the
+  // mesh holds one attribute per name), and the reader says so.
+  std::size_t repeats_line = 0;  // the header line that repeats the name, or 0
 };
+
+// The most properties one element may declare: values are kept per property (an OpenMesh
+// property each, whose container searches its properties one by one as each is added), so that
+// work grows with the square of their number; 100,000 took minutes. A file with more is refused
+// with this limit named.
+inline constexpr std::size_t kMaxPlyProperties = 10000;
 
 struct PlyElement {
   std::string name;
@@ -69,7 +78,9 @@ struct PlyHeader {
 
 // The header at the start of `bytes` (which may be only the file's first bytes) of a PLY file of
 // `file_size` bytes. Throws FileError naming the line and reason for a malformed header, a vertex
-// element without x, y and z, or counts that more bytes than the file has would be needed for.
+// element without x, y and z, two elements of one name, an element with more than
+// kMaxPlyProperties properties, or counts that more bytes than the file has would be needed for.
+// Linear in the header's length.
 PlyHeader parse_ply_header(std::string_view bytes, std::uint64_t file_size,
                            const std::filesystem::path& path);
 

@@ -290,13 +290,40 @@ unsigned long long read_records(PlyBody& body, const PlyHeader& header,
   return std::max(first, before);
 }
 
-// The vertex and face properties the mesh keeps (every scalar one but x, y, z), their columns in
-// the soup, and a warning for each element or list that cannot be kept.
+// 0, 1, 2 for a position's property x, y, z; -1 for any other name.
+int position_axis(std::string_view name) {
+  return name.size() == 1 && name[0] >= 'x' && name[0] <= 'z' ? name[0] - 'x' : -1;
+}
+
+// Properties that repeat an earlier one's name in their element: the mesh keeps one attribute a
+// name, so their values are read past, and one warning says how many and names the first.
+struct RepeatedNames {
+  std::size_t count = 0;
+  std::string first;
+  void note(const PlyProperty& property, const PlyElement& element) {
+    if (count++ == 0) {
+      first = "'" + property.name + "' of the '" + element.name + "' element at line " +
+              std::to_string(property.repeats_line);
+    }
+  }
+  void warn(LoadReport& report) const {
+    if (count == 0) return;
+    report.warnings.push_back(std::to_string(count) +
+                              (count == 1 ? " property repeats" : " properties repeat") +
+                              " an earlier property's name and " + (count == 1 ? "was" : "were") +
+                              " not kept (the first of that name is): " + first);
+  }
+};
+
+// The vertex and face properties the mesh keeps (every scalar one but x, y, z, and the first of
+// each name), their columns in the soup, and a warning for each element, list or repeated name
+// that cannot be kept.
 std::vector<ElementColumns> plan_attributes(const PlyHeader& header, Soup& soup,
                                             LoadReport& report) {
   std::vector<ElementColumns> plan(header.elements.size());
   AttributeLayout& layout = soup.layout;
   layout.encoding = header.encoding;
+  RepeatedNames repeated;
   for (std::size_t e = 0; e < header.elements.size(); ++e) {
     const PlyElement& element = header.elements[e];
     const bool is_vertex = element.name == "vertex", is_face = element.name == "face";
@@ -313,17 +340,14 @@ std::vector<ElementColumns> plan_attributes(const PlyHeader& header, Soup& soup,
     const int face_list = is_face ? face_list_of(element) : -1;
     for (int i = 0; i < static_cast<int>(element.properties.size()); ++i) {
       const PlyProperty& property = element.properties[i];
-      const bool position =
-          is_vertex && (property.name == "x" || property.name == "y" || property.name == "z");
-      if (position) {
-        // Written back as they came when all three are floats or all doubles; otherwise (mixed
-        // or integer types, which new positions would not fit) as doubles, which hold them all.
-        if (property.name == "x") {
-          layout.position_type = property.type;
-        } else if (property.type != layout.position_type) {
-          layout.position_type = ScalarType::Float64;
-        }
-        if (is_integer_type(property.type)) layout.position_type = ScalarType::Float64;
+      const int axis = is_vertex ? position_axis(property.name) : -1;
+      if (property.repeats_line) {
+        repeated.note(property, element);
+      } else if (axis >= 0) {
+        // Each written back in its own type (a double z beside float x and y stays double),
+        // integers as doubles: new positions would not fit them.
+        layout.position_types[axis] =
+            is_integer_type(property.type) ? ScalarType::Float64 : property.type;
       } else if (i == face_list) {
         layout.face_count_type = property.count_type;
         layout.face_index_type = property.type;
@@ -337,6 +361,7 @@ std::vector<ElementColumns> plan_attributes(const PlyHeader& header, Soup& soup,
       }
     }
   }
+  repeated.warn(report);
   return plan;
 }
 

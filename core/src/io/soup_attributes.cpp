@@ -19,14 +19,14 @@ void copy_by_origin(const std::vector<T>& values, const std::vector<int>& origin
 void copy_layout_values(const Soup& soup, const SoupOrigins& origins, Mesh& mesh, bool two) {
   if (soup.layout.empty()) return;
   set_attribute_layout(mesh, soup.layout);
-  for (std::size_t a = 0; a < soup.layout.vertex.size(); ++a) {
-    const auto property = vertex_attribute(mesh, soup.layout.vertex[a].name);
-    copy_by_origin(soup.vertex_values[a], origins.vertex, mesh.property(property).data_vector(),
+  const auto vertex = vertex_attributes(mesh, soup.layout.vertex);
+  for (std::size_t a = 0; a < vertex.size(); ++a) {
+    copy_by_origin(soup.vertex_values[a], origins.vertex, mesh.property(vertex[a]).data_vector(),
                    two);
   }
-  for (std::size_t a = 0; a < soup.layout.face.size(); ++a) {
-    const auto property = face_attribute(mesh, soup.layout.face[a].name);
-    copy_by_origin(soup.face_values[a], origins.face, mesh.property(property).data_vector(), two);
+  const auto face = face_attributes(mesh, soup.layout.face);
+  for (std::size_t a = 0; a < face.size(); ++a) {
+    copy_by_origin(soup.face_values[a], origins.face, mesh.property(face[a]).data_vector(), two);
   }
 }
 
@@ -88,7 +88,7 @@ void copy_obj_values(Soup& soup, const SoupOrigins& origins, Mesh& mesh, bool tw
 void keep_file_format(const Soup& soup, Mesh& mesh) {
   const AttributeLayout plain;  // ASCII, double positions, uchar counts, int indices
   const AttributeLayout& file = soup.layout;
-  if (file.encoding != plain.encoding || file.position_type != plain.position_type ||
+  if (file.encoding != plain.encoding || file.position_types != plain.position_types ||
       file.face_count_type != plain.face_count_type ||
       file.face_index_type != plain.face_index_type) {
     set_attribute_layout(mesh, file);

@@ -88,27 +88,14 @@ const char* type_name(ScalarType type) {
   return kNames[static_cast<int>(type)];
 }
 
-std::vector<OpenMesh::VPropHandleT<double>> vertex_properties(const Mesh& mesh,
-                                                              const AttributeLayout& layout) {
-  std::vector<OpenMesh::VPropHandleT<double>> handles;
-  for (const auto& a : layout.vertex) handles.push_back(vertex_attribute(mesh, a.name));
-  return handles;
-}
-
-std::vector<OpenMesh::FPropHandleT<double>> face_properties(const Mesh& mesh,
-                                                            const AttributeLayout& layout) {
-  std::vector<OpenMesh::FPropHandleT<double>> handles;
-  for (const auto& a : layout.face) handles.push_back(face_attribute(mesh, a.name));
-  return handles;
-}
-
 std::string ply_header(const Mesh& mesh, const AttributeLayout& layout) {
   static const char* const kEncodings[] = {"ascii", "binary_little_endian", "binary_big_endian"};
   std::string out = std::string("ply\nformat ") + kEncodings[static_cast<int>(layout.encoding)] +
                     " 1.0\ncomment written by holefill\nelement vertex " +
                     std::to_string(mesh.n_vertices()) + "\n";
-  for (const char* axis : {"x", "y", "z"}) {
-    out += std::string("property ") + type_name(layout.position_type) + " " + axis + "\n";
+  for (int axis = 0; axis < 3; ++axis) {
+    out += std::string("property ") + type_name(layout.position_types[axis]) + " " +
+           static_cast<char>('x' + axis) + "\n";
   }
   for (const auto& a : layout.vertex)
     out += "property " + std::string(type_name(a.type)) + " " + a.name + "\n";
@@ -125,11 +112,11 @@ void write_ply(const Mesh& mesh, PieceOut& out) {
   const AttributeLayout layout = attribute_layout(mesh);
   out.text = ply_header(mesh, layout);
   ValueWriter writer(out.text, layout.encoding);
-  const auto vertex_values = vertex_properties(mesh, layout);
+  const auto vertex_values = vertex_attributes(mesh, layout.vertex);
   for (const auto v : mesh.vertices()) {
     for (int axis = 0; axis < 3; ++axis) {
       if (axis) writer.separate();
-      writer.write(mesh.point(v)[axis], layout.position_type);
+      writer.write(mesh.point(v)[axis], layout.position_types[axis]);
     }
     for (std::size_t a = 0; a < vertex_values.size(); ++a) {
       writer.separate();
@@ -138,7 +125,7 @@ void write_ply(const Mesh& mesh, PieceOut& out) {
     writer.end_record();
     out.end_record();
   }
-  const auto face_values = face_properties(mesh, layout);
+  const auto face_values = face_attributes(mesh, layout.face);
   for (const auto f : mesh.faces()) {
     writer.write(3.0, layout.face_count_type);
     for (const auto v : mesh.fv_range(f)) {
@@ -191,8 +178,8 @@ void write_off(const Mesh& mesh, PieceOut& out) {
   const bool only_colours = std::all_of(layout.face.begin(), layout.face.end(), [](const auto& a) {
     return a.name == "red" || a.name == "green" || a.name == "blue" || a.name == "alpha";
   });
-  const auto face_colour =
-      only_colours ? face_properties(mesh, layout) : std::vector<OpenMesh::FPropHandleT<double>>{};
+  const auto face_colour = only_colours ? face_attributes(mesh, layout.face)
+                                        : std::vector<OpenMesh::FPropHandleT<double>>{};
   append_faces(
       mesh, out.text, "3 ", 0,
       [&](FaceHandle f) {
