@@ -295,6 +295,39 @@ TEST_F(ObjFiles, TexturedObjRoundTripsBitForBit) {
   EXPECT_EQ(read(dir_ / "out" / "box2.obj"), written);
 }
 
+TEST_F(ObjFiles, AMaterialLibraryWhosePathHoldsASpaceIsNotWrittenButNamed) {
+  // From "in dir/" to "out/" the library's path is "../in dir/box.mtl": written unquoted, OBJ
+  // readers (ours too) read two libraries, "../in" and "dir/box.mtl".
+  const fs::path in = write("in dir/box.obj", "mtllib box.mtl other.mtl\n" + textured_box());
+  write("in dir/box.mtl", "newmtl wood\nnewmtl metal\n");
+  const Mesh mesh = load_mesh(in);
+  const ObjTables& tables = mesh.property(obj_handles(mesh).tables);
+  ASSERT_EQ(tables.material_libraries.size(), 3u);
+  fs::create_directories(dir_ / "out");
+  const fs::path out = dir_ / "out" / "box.obj";
+  const auto lost = attributes_not_written(mesh, out);
+  ASSERT_EQ(lost.size(), 1u);
+  const std::string folder = fs::weakly_canonical(dir_ / "in dir").generic_string();
+  EXPECT_EQ(lost[0], "the material libraries '" + folder + "/box.mtl', '" + folder +
+                         "/other.mtl', '" + folder +
+                         "/mats/box.mtl' (the path from the output's folder holds a space, which "
+                         "OBJ readers take as the gap between two libraries)");
+  save_mesh(mesh, out);
+  const std::string written = read(out);
+  EXPECT_EQ(written.find("mtllib"), std::string::npos) << written.substr(0, 200);
+  const Mesh again = load_mesh(out);
+  EXPECT_TRUE(again.property(obj_handles(again).tables).material_libraries.empty());
+
+  // Beside the input the names hold no space: all written, nothing named.
+  const fs::path beside = dir_ / "in dir" / "filled.obj";
+  EXPECT_TRUE(attributes_not_written(mesh, beside).empty());
+  save_mesh(mesh, beside);
+  EXPECT_NE(read(beside).find("mtllib box.mtl other.mtl mats/box.mtl\n"), std::string::npos);
+  const Mesh there = load_mesh(beside);
+  EXPECT_EQ(there.property(obj_handles(there).tables).material_libraries,
+            tables.material_libraries);
+}
+
 TEST_F(ObjFiles, SmoothingGroupsRoundTripBitForBit) {
   // As holefill writes it: "s" only where the group changes (it lasts across "g"), spelt as read.
   const std::string text =

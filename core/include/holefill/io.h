@@ -73,7 +73,8 @@ std::string mesh_to_bytes(const Mesh& mesh, const std::filesystem::path& name);
 
 // What save_mesh leaves out of a file of `name`'s format (by extension) that the mesh carries,
 // one phrase per kind (e.g. "vertex properties quality" for an OBJ, "texture coordinates, ..."
-// for a PLY of an OBJ's mesh); empty when the file holds everything. For callers to warn.
+// for a PLY of an OBJ's mesh; for an OBJ, material libraries whose path from `name`'s folder holds
+// a space); empty when the file holds everything. For callers to warn.
 std::vector<std::string> attributes_not_written(const Mesh& mesh,
                                                 const std::filesystem::path& name);
 

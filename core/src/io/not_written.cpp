@@ -7,6 +7,7 @@
 #include "holefill/attributes.h"
 #include "holefill/io.h"
 #include "holefill/obj_attributes.h"
+#include "writers.h"
 
 namespace holefill {
 namespace {
@@ -42,6 +43,26 @@ std::string obj_values_held(const Mesh& mesh) {
   return joined(held);
 }
 
+// The material libraries an OBJ written at `name` cannot name (material_library_name), each
+// with the path it would have: a phrase, or empty when there is none.
+std::string unnamed_material_libraries(const Mesh& mesh, const std::filesystem::path& name) {
+  const ObjHandles obj = obj_handles(mesh);
+  if (!obj.valid()) return {};
+  std::vector<std::string> unnamed;
+  for (const auto& library : mesh.property(obj.tables).material_libraries) {
+    if (io::material_library_name(library, name).empty()) {
+      std::string& quoted = unnamed.emplace_back(1, '\'');
+      quoted += library.generic_string();
+      quoted += '\'';
+    }
+  }
+  if (unnamed.empty()) return {};
+  return std::string(unnamed.size() == 1 ? "the material library " : "the material libraries ") +
+         joined(unnamed) +
+         " (the path from the output's folder holds a space, which OBJ readers take as the "
+         "gap between two libraries)";
+}
+
 }  // namespace
 
 std::vector<std::string> attributes_not_written(const Mesh& mesh,
@@ -67,6 +88,8 @@ std::vector<std::string> attributes_not_written(const Mesh& mesh,
   if (!face.empty()) lost.push_back("face properties " + joined(face));
   const std::string obj_values = ext == ".obj" ? std::string() : obj_values_held(mesh);
   if (!obj_values.empty()) lost.push_back(obj_values + " (only OBJ holds them)");
+  const std::string libraries = ext == ".obj" ? unnamed_material_libraries(mesh, name) : "";
+  if (!libraries.empty()) lost.push_back(libraries);
   return lost;
 }
 

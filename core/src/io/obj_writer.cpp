@@ -24,15 +24,12 @@ fs::path output_folder(const fs::path& output) {
 }
 
 void append_material_libraries(std::string& out, const ObjTables& tables, const fs::path& output) {
-  if (tables.material_libraries.empty()) return;
-  const fs::path folder = output_folder(output);
-  out += "mtllib";
+  std::string names;
   for (const auto& library : tables.material_libraries) {
-    const fs::path relative = library.lexically_relative(folder);
-    out += ' ';
-    out += (relative.empty() ? library : relative).generic_string();
+    const fs::path name = material_library_name(library, output);
+    if (!name.empty()) names += ' ' + name.generic_string();
   }
-  out += '\n';
+  if (!names.empty()) out += "mtllib" + names + '\n';
 }
 
 // Vertex colours as "v x y z r g b" (in [0, 1]: integer channels are scaled, others written as
@@ -181,6 +178,15 @@ void append_faces_with_states(const Mesh& mesh, const ObjHandles& obj, const Obj
 }
 
 }  // namespace
+
+fs::path material_library_name(const fs::path& library, const fs::path& output) {
+  const fs::path relative = library.lexically_relative(output_folder(output));
+  const std::string name = (relative.empty() ? library : relative).generic_string();
+  const bool has_blank = std::any_of(name.begin(), name.end(), [](unsigned char c) {
+    return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\r' || c == '\n';
+  });
+  return has_blank ? fs::path() : fs::path(name);
+}
 
 void write_obj(const Mesh& mesh, const fs::path& output, PieceOut& out) {
   out.text += "# written by holefill\n";

@@ -20,6 +20,13 @@ namespace holefill::io {
 void write_mesh_file(const Mesh& mesh, const std::string& ext, const std::filesystem::path& output,
                      const ByteWriter& write);
 
+// How an OBJ written at `output` names the material library `library`: relative to the output's
+// folder (links resolved; the library's absolute path where there is no relative one). Empty when
+// that name holds whitespace, which OBJ readers (tinyobjloader too) take as the gap between two
+// libraries: such a library is not written, and attributes_not_written names it.
+std::filesystem::path material_library_name(const std::filesystem::path& library,
+                                            const std::filesystem::path& output);
+
 class PieceOut;
 // The OBJ file (obj_writer.cpp), handed on through `out` as it is made.
 void write_obj(const Mesh& mesh, const std::filesystem::path& output, PieceOut& out);
