@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <iostream>
 #include <optional>
 
 #include "holefill/errors.h"
@@ -46,6 +47,50 @@ fs::path resolve_links(const fs::path& path) {
 bool is_special_file(const fs::path& path) {
   struct stat info {};
   return ::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode);
+}
+
+// N when `path` is /proc/PID/fd/N or /proc/PID/task/TID/fd/N of this process (PID its own,
+// /proc/self and /proc/thread-self resolved to it); -1 otherwise.
+int descriptor_number(const fs::path& path) {
+  const std::string own = "/proc/" + std::to_string(::getpid()) + "/";
+  const std::string text = path.native();
+  if (text.rfind(own, 0) != 0) return -1;
+  const std::size_t fd = text.rfind("/fd/");
+  if (fd == std::string::npos) return -1;
+  const std::string middle = text.substr(own.size() - 1, fd - own.size() + 1);
+  const bool task = middle.rfind("/task/", 0) == 0 && middle.find('/', 6) == std::string::npos;
+  if (!middle.empty() && !task) return -1;
+  const std::string number = text.substr(fd + 4);
+  if (number.empty() || number.size() > 9 ||
+      number.find_first_not_of("0123456789") != std::string::npos) {
+    return -1;
+  }
+  return std::stoi(number);
+}
+
+// The open descriptor of this process that `path` names, through any symbolic links (/dev/stdout
+// leads to /proc/self/fd/1, /dev/fd is /proc/self/fd); -1 when it names none. Each link is
+// looked at before it is followed: the link /proc/PID/fd/N leads to the file the descriptor has
+// open, whose name is no longer the descriptor's.
+int named_descriptor(const fs::path& path) {
+  fs::path current = path;
+  for (int hops = 0; hops <= 40; ++hops) {
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(current, ec);
+    if (ec || !absolute.has_filename()) return -1;
+    const fs::path folder = fs::canonical(absolute.parent_path(), ec);
+    if (ec) return -1;
+    const fs::path name = folder / absolute.filename();
+    if (const int fd = descriptor_number(name); fd >= 0) {
+      return ::fcntl(fd, F_GETFD) == -1 ? -1 : fd;
+    }
+    struct stat info {};
+    if (::lstat(name.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return -1;
+    const fs::path target = fs::read_symlink(name, ec);
+    if (ec) return -1;
+    current = target.is_absolute() ? target : folder / target;
+  }
+  return -1;
 }
 
 fs::path folder_of(const fs::path& file) {
@@ -124,6 +169,18 @@ void write_directly(const fs::path& path, const fs::path& target, const Producer
   if (error != 0) fail_with_errno(path, error);
 }
 
+// Writes to the process's descriptor `fd` where it stands, after what the standard streams hold.
+void write_to_descriptor(const fs::path& path, int fd, const Producer& produce) {
+  std::cout.flush();
+  std::cerr.flush();
+  std::clog.flush();
+  std::fflush(nullptr);
+  std::uint64_t size = 0;
+  if (const int error = write_produced(fd, produce, size); error != 0) {
+    fail_with_errno(path, error);
+  }
+}
+
 // Writes the bytes to a fresh temporary file beside `target`, complete and on disk.
 void write_partial(detail::PartialFile& partial, const fs::path& path, const Producer& produce,
                    const std::optional<struct stat>& existing) {
@@ -159,6 +216,9 @@ void write_output_file(const fs::path& path, std::string_view bytes) {
 }
 
 void write_output_file(const fs::path& path, const Producer& produce) {
+  if (const int fd = named_descriptor(path); fd >= 0) {
+    return write_to_descriptor(path, fd, produce);
+  }
   if (is_special_file(path)) return write_directly(path, path, produce);
   const fs::path target = resolve_links(path);
   const auto existing = existing_target(path, target);
@@ -177,7 +237,7 @@ void write_output_file(const fs::path& path, const Producer& produce) {
 }
 
 void check_output_file(const fs::path& path) {
-  if (is_special_file(path)) return;
+  if (named_descriptor(path) >= 0 || is_special_file(path)) return;
   const fs::path target = resolve_links(path);
   existing_target(path, target);  // throws for a directory or a read-only file
   check_name_length(path, target);

@@ -111,7 +111,10 @@ int write_all(int fd, const char* bytes, std::size_t size) {
 }
 
 void install_partial_file_cleanup() {
-  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+  // A write past the file-size limit (ulimit -f) ended the process by SIGXFSZ, leaving the
+  // temporary file; ignored, the write fails with EFBIG, an error of that file like any other.
+  std::signal(SIGXFSZ, SIG_IGN);
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM}) {
     struct sigaction previous {};
     ::sigaction(signal, nullptr, &previous);
     if (previous.sa_handler == SIG_IGN) continue;  // e.g. SIGHUP under nohup: stay ignored

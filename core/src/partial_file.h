@@ -1,5 +1,6 @@
 // The temporary file an output is written to before it takes the output's name, removed when it
-// is not renamed: on an error (the destructor) and on SIGINT, SIGTERM or SIGHUP (the handlers of
+// is not renamed: on an error (the destructor) and on SIGINT, SIGTERM, SIGHUP, SIGQUIT or SIGALRM
+// (the handlers of
 // remove_partial_files_on_signals, which see every PartialFile alive).
 #pragma once
 

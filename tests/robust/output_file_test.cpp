@@ -3,6 +3,8 @@
 // long names, and no temporary file left behind, even when a signal ends the process.
 #include "holefill/output_file.h"
 
+#include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -39,6 +41,14 @@ std::string write_error(const fs::path& path, const std::string& bytes) {
 }
 
 using OutputFile = ScratchTest;
+
+// Lowers the soft limit `resource` of this process (a death test's child) to `most`.
+void limit(int resource, rlim_t most) {
+  rlimit now{};
+  ::getrlimit(resource, &now);
+  now.rlim_cur = most;
+  ::setrlimit(resource, &now);
+}
 
 // A symbolic link was replaced by a regular file (as root, --report /dev/stdout replaced the
 // system's link).
@@ -169,6 +179,35 @@ TEST_F(OutputFile, WritesThroughProcsDescriptorLinks) {
   EXPECT_EQ(std::string(received), "to the pipe");
 }
 
+// With stdout redirected to a file, --report /dev/stdout renamed a new file over it: what was
+// written to it before was lost (and reopening it by name would write from its start). Every name
+// of an open descriptor writes through the descriptor, where it stands.
+TEST_F(OutputFile, NamesOfAnOpenDescriptorWriteThroughItWhereItStands) {
+  const fs::path file = dir_ / "redirected.txt";
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::write(fd, "before\n", 7), 7);
+  const std::string number = std::to_string(fd);
+  fs::create_symlink("/dev/fd/" + number, dir_ / "link");
+  fs::create_symlink(dir_ / "link", dir_ / "link-to-link");
+  std::string expected = "before\n";
+  for (const fs::path& name :
+       {fs::path("/proc/self/fd/" + number), fs::path("/dev/fd/" + number),
+        fs::path("/proc/" + std::to_string(::getpid()) + "/fd/" + number), dir_ / "link-to-link"}) {
+    SCOPED_TRACE(name.string());
+    check_output_file(name);
+    write_output_file(name, name.string() + "\n");
+    expected += name.string() + "\n";
+    EXPECT_EQ(contents(file), expected);
+  }
+  ::close(fd);
+  // The links are kept and no temporary file was left.
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link"));
+  EXPECT_EQ(files_in(dir_), 3u);
+  // A closed descriptor's name is no descriptor: /proc says there is no such file.
+  EXPECT_NE(write_error("/proc/self/fd/" + number, "x"), "");
+}
+
 // "could not be written" never said why.
 TEST_F(OutputFile, SaysWhyItFailed) {
   fs::create_symlink("/dev/full", dir_ / "full.obj");
@@ -228,10 +267,12 @@ TEST_F(OutputFile, SameFileComparesIdentityNotText) {
 }
 
 // Interrupted writes left `.OUT.partial-N.ext` files (26 MB in one test).
+// SIGQUIT and SIGALRM left them too.
 TEST_F(OutputFile, ASignalRemovesTheTemporaryFile) {
-  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM}) {
     EXPECT_EXIT(
         {
+          limit(RLIMIT_CORE, 0);  // SIGQUIT's default action dumps core
           remove_partial_files_on_signals();
           detail::PartialFile partial(dir_ / "out.obj", dir_, 0666);
           if (!fs::exists(partial.path())) std::exit(1);
@@ -240,6 +281,20 @@ TEST_F(OutputFile, ASignalRemovesTheTemporaryFile) {
         ::testing::KilledBySignal(signal), "");
     EXPECT_EQ(files_in(dir_), 0u) << signal;
   }
+}
+
+// A write past the file-size limit (ulimit -f) ended the process by SIGXFSZ and left the
+// temporary file; now it is an error of that file, with the system's reason.
+TEST_F(OutputFile, AFileSizeLimitIsAnErrorOfTheFileNotASignal) {
+  EXPECT_EXIT(
+      {
+        remove_partial_files_on_signals();
+        limit(RLIMIT_FSIZE, 1000);
+        const std::string error = write_error(dir_ / "big.obj", std::string(5000, 'v'));
+        std::exit(error.find("File too large") != std::string::npos && files_in(dir_) == 0 ? 4 : 1);
+      },
+      ::testing::ExitedWithCode(4), "");
+  EXPECT_EQ(files_in(dir_), 0u);
 }
 
 }  // namespace
