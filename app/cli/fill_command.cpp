@@ -21,9 +21,10 @@
 namespace holefill::cli {
 namespace {
 
-// "A,B": two hole ids of the mesh.
+// "A,B": two different hole ids of the mesh, whose loops --max-boundary does not exclude.
 std::pair<int, int> parse_bridge(const FillArguments& a, const std::string& text,
-                                 std::size_t hole_count) {
+                                 const std::vector<Hole>& holes) {
+  const std::size_t hole_count = holes.size();
   const std::size_t comma = text.find(',');
   std::vector<int> ids;
   for (const std::string& part :
@@ -39,10 +40,25 @@ std::pair<int, int> parse_bridge(const FillArguments& a, const std::string& text
     }
     ids.push_back(id);
   }
+  if (ids[0] == ids[1]) {
+    throw UsageError("--bridge joins two different holes, got hole " + std::to_string(ids[0]) +
+                     " twice ('" + text + "')");
+  }
+  // The band's loops (without any islands, which only add edges) over the limit: the bridge
+  // would be left out of the fill without a word.
+  const std::size_t edges = holes[ids[0]].size() + holes[ids[1]].size();
+  const std::size_t most = a.selection.max_boundary_edges;
+  if (most && edges > most) {
+    throw UsageError("--bridge " + text + ": holes " + std::to_string(ids[0]) + " and " +
+                     std::to_string(ids[1]) + " have " + std::to_string(edges) +
+                     " boundary edges together, more than --max-boundary " + std::to_string(most) +
+                     " fills");
+  }
   return {ids[0], ids[1]};
 }
 
-void select_holes(FillArguments& a, std::size_t hole_count) {
+void select_holes(FillArguments& a, const std::vector<Hole>& holes) {
+  const std::size_t hole_count = holes.size();
   for (const std::int64_t id : a.hole_ids) {
     if (id >= static_cast<std::int64_t>(hole_count)) {
       throw UsageError("--holes: " + a.input + " has no hole " + std::to_string(id) + " (it has " +
@@ -51,7 +67,7 @@ void select_holes(FillArguments& a, std::size_t hole_count) {
     a.selection.hole_ids.push_back(static_cast<int>(id));
   }
   for (const std::string& text : a.bridges) {
-    a.selection.bridges.push_back(parse_bridge(a, text, hole_count));
+    a.selection.bridges.push_back(parse_bridge(a, text, holes));
   }
 }
 
@@ -129,7 +145,7 @@ int run_fill(FillArguments& a, const Streams& streams) {
   Mesh mesh = load_and_warn(a.input, a.format, streams);
   const PreparedMesh prepared = prepare_mesh(mesh, a.preparation, a.input, streams.err);
   const auto& holes = prepared.holes;
-  select_holes(a, holes.size());
+  select_holes(a, holes);
   ReportInput report;
   report.input_path = a.input;
   report.output_path = a.output;

@@ -36,7 +36,11 @@ CLI::Validator whole_number(std::int64_t min, std::int64_t max) {
             (error != std::errc() && error != std::errc::result_out_of_range)) {
           return "needs a whole number " + range + ", got '" + text + "'";
         }
-        if (error == std::errc::result_out_of_range || value < min || value > max) {
+        // Past either end of int64 from_chars gives no value: the sign says which end.
+        const bool too_large =
+            error == std::errc::result_out_of_range ? text[0] != '-' : value > max;
+        if (too_large) return "must be at most " + std::to_string(max) + ", got " + text;
+        if (error == std::errc::result_out_of_range || value < min) {
           return "must be " + range + ", got " + text;
         }
         text = std::to_string(value);  // what CLI11 then converts: no octal or hex reading

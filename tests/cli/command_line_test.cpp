@@ -114,6 +114,27 @@ TEST_F(Cli, HoleIdsAreReadExactlyAndOutOfRangeIdsRefused) {
   EXPECT_NE(leading_zero.err.find("no hole 10"), std::string::npos) << leading_zero.err;
 }
 
+// A whole number past int64's range said "must be >= 0", which it is: the limit it passed is
+// the one to name.
+TEST_F(Cli, WholeNumbersTooLargeSayTheLargestAccepted) {
+  const std::string out = in_dir("x.obj");
+  for (const char* option : {"--max-boundary", "--restricted-above", "--remove-small-components"}) {
+    const CliRun run = run_cli({"fill", bunny(), "-o", out, option, "99999999999999999999"});
+    EXPECT_EQ(run.code, cli::kUsage) << option;
+    EXPECT_NE(run.err.find(std::string(option) +
+                           ": must be at most 9223372036854775807, got 99999999999999999999"),
+              std::string::npos)
+        << run.err;
+    const CliRun negative = run_cli({"fill", bunny(), "-o", out, option, "-99999999999999999999"});
+    EXPECT_NE(negative.err.find(std::string(option) + ": must be >= 0"), std::string::npos)
+        << negative.err;
+  }
+  const CliRun iterations = run_cli({"fill", bunny(), "-o", out, "--smooth-iterations", "2000000"});
+  EXPECT_NE(iterations.err.find("must be at most 1000000, got 2000000"), std::string::npos)
+      << iterations.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 // 4e-324 is a positive double (the smallest): it was refused as "needs a number".
 TEST_F(Cli, NumbersAreRefusedWithTheirRange) {
   const std::string out = in_dir("x.obj");

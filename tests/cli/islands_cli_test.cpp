@@ -90,12 +90,36 @@ TEST_F(Cli, ABridgeTooLongLeavesBothHolesOpenWithTheReason) {
 
 TEST_F(Cli, BridgeNeedsTwoExistingHoleIds) {
   const std::string input = write_cut_sphere(in_dir("cut.obj"), 0.3);
-  for (const std::string bad : {"0", "0,7", "0,x", "0,1,2"}) {
+  // "0,0" was taken, then not filled (exit 1): "a bridge needs two different holes".
+  for (const std::string bad : {"0", "0,7", "0,x", "0,1,2", "0,0", "1,1"}) {
     const CliRun run = run_cli({"fill", input, "-o", in_dir("out.obj"), "--bridge", bad});
     EXPECT_EQ(run.code, cli::kUsage) << bad;
     EXPECT_NE(run.err.find("--bridge"), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(in_dir("out.obj")));
   }
+}
+
+// --max-boundary below the bridged loops' edges left the bridge (and both holes) out of the fill
+// without a word, exit 0.
+TEST_F(Cli, ABridgeThatMaxBoundaryExcludesIsAUsageError) {
+  const std::string input = write_cut_sphere(in_dir("cut.obj"), 0.3);
+  const auto holes = find_holes(load_mesh(input));
+  ASSERT_EQ(holes.size(), 2u);
+  const std::size_t edges = holes[0].size() + holes[1].size();
+  const std::string out = in_dir("out.obj");
+  const CliRun run = run_cli(
+      {"fill", input, "-o", out, "--bridge", "0,1", "--max-boundary", std::to_string(edges - 1)});
+  EXPECT_EQ(run.code, cli::kUsage) << run.err;
+  EXPECT_NE(run.err.find("--bridge 0,1: holes 0 and 1 have " + std::to_string(edges) +
+                         " boundary edges together, more than --max-boundary " +
+                         std::to_string(edges - 1) + " fills"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(out));
+  const CliRun enough = run_cli(
+      {"fill", input, "-o", out, "--bridge", "0,1", "--max-boundary", std::to_string(edges)});
+  EXPECT_EQ(enough.code, cli::kOk) << enough.err;
+  EXPECT_TRUE(find_holes(load_mesh(out)).empty());
 }
 
 }  // namespace
