@@ -11,12 +11,13 @@ namespace holefill::cli {
 // Exit codes, one per kind of outcome, so scripts can tell them apart.
 enum ExitCode : int {
   kOk = 0,
-  kSomeHolesNotFilled = 1,  // output written, but at least one selected hole failed
+  kSomeHolesNotFilled = 1,  // output written, but at least one selected hole failed (or was
+                            // left open because every patch tried intersects the mesh)
   kUsage = 2,               // bad arguments
   kBadInput = 3,            // input file missing, unreadable or invalid
   kWriteFailed = 4,         // output or report could not be written
-  kPatchesIntersect = 5,    // output written, every selected hole filled, but some patch
-                            // intersects the mesh (the report names the holes)
+  kPatchesIntersect = 5,    // --allow-intersections: output written, every selected hole
+                            // filled, but some patch intersects the mesh (the report names them)
   kInternalError = 6,       // an unexpected error inside holefill (a bug: please report it)
   kOutOfMemory = 7,         // memory ran out; no output was written
 };

@@ -121,6 +121,9 @@ void add_selection_options(CLI::App& command, FillArguments& a) {
       ->default_str("");
   command.add_option("--stage", a.stage, "stop after this stage")
       ->check(CLI::IsMember(names(kStages)));
+  command.add_flag("--allow-intersections", a.options.allow_intersections,
+                   "keep a hole's best patch even when it intersects the mesh\n"
+                   "(exit 5); by default such a hole is left open (exit 1)");
 }
 
 }  // namespace

@@ -93,6 +93,8 @@ FillCounts report_problems(const std::vector<HoleFill>& fills, const std::string
       err << prefix << fill.hole_id << ": " << fill.smoothing_note << "\n";
     if (!fill.attributes_note.empty())
       err << prefix << fill.hole_id << ": " << fill.attributes_note << "\n";
+    if (!fill.islands_note.empty())
+      err << prefix << fill.hole_id << ": " << fill.islands_note << "\n";
     if (fill.failed()) err << prefix << fill.hole_id << " not filled: " << fill.failure << "\n";
   }
   return counts;

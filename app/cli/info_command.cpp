@@ -16,14 +16,14 @@
 namespace holefill::cli {
 namespace {
 
-// "islands 1,2", "island of 0", and "see below" when the hole has a problem (pinches are in the
-// loop's own note).
+// "islands 1,2", "island of 0", and "see below" when a doubtful island is filled apart (pinches
+// are in the loop's own note).
 std::string island_note(const Hole& hole, const IslandMap& islands) {
   std::string note;
   auto add = [&note](const std::string& part) { note += (note.empty() ? "" : ", ") + part; };
   if (islands.has_islands(hole.id)) add("islands " + id_list(islands.islands[hole.id]));
   if (islands.outer[hole.id] >= 0) add("island of " + std::to_string(islands.outer[hole.id]));
-  if (!islands.problem[hole.id].empty()) add("see below");
+  if (!islands.note[hole.id].empty()) add("see below");
   return note;
 }
 
@@ -57,9 +57,9 @@ int run_info(const InfoArguments& a, const Streams& streams) {
         << format("%.6g", hole.perimeter) << "  "
         << joined_note(loop_note(hole, prepared.classes[i]), island_note(hole, islands)) << "\n";
   }
-  std::set<std::string> problems(islands.problem.begin(), islands.problem.end());
-  problems.erase("");
-  for (const auto& problem : problems) out << "  not fillable as is: " << problem << "\n";
+  std::set<std::string> notes(islands.note.begin(), islands.note.end());
+  notes.erase("");
+  for (const auto& note : notes) out << "  filled apart: " << note << "\n";
   return kOk;
 }
 

@@ -27,7 +27,8 @@ Json options_json(const FillOptions& o) {
           {"fair_order", o.smooth.fair.order},
           {"smooth_iterations", o.smooth.iterations},
           {"smooth_step", o.smooth.step},
-          {"last_stage", to_string(o.last_stage)}};
+          {"last_stage", to_string(o.last_stage)},
+          {"allow_intersections", o.allow_intersections}};
 }
 
 Json fill_json(const HoleFill& fill) {
@@ -41,7 +42,9 @@ Json fill_json(const HoleFill& fill) {
   if (!fill.refinement_note.empty()) entry["refinement_note"] = fill.refinement_note;
   if (!fill.smoothing_note.empty()) entry["smoothing_note"] = fill.smoothing_note;
   if (!fill.attributes_note.empty()) entry["attributes_note"] = fill.attributes_note;
+  if (!fill.islands_note.empty()) entry["islands_note"] = fill.islands_note;
   entry["self_intersections"] = fill.self_intersections;
+  if (fill.refused_intersections > 0) entry["refused_intersections"] = fill.refused_intersections;
   const IntersectionAvoidance& avoidance = fill.avoidance;
   entry["intersection_avoidance"] = {{"first_pairs", avoidance.first_pairs},
                                      {"rounds", avoidance.rounds},
@@ -78,6 +81,9 @@ void add_preparation(const PreparedMesh& p, Json& document) {
                           {"largest_distance", p.stitch.largest_distance},
                           {"edges_left_apart", p.stitch.edges_left_apart},
                           {"t_junctions", p.stitch.t_junctions}};
+    document["weld"] = {{"positions", p.weld.positions},
+                        {"vertices_welded", p.weld.vertices_welded},
+                        {"positions_left", p.weld.positions_left}};
   } else {
     document["stitch"] = nullptr;
   }
@@ -137,7 +143,7 @@ std::string json_info(const std::string& input_path, const Mesh& mesh,
                {"kind", to_string(prepared.classes[i].kind)},
                {"islands", islands.islands[hole.id]}};
     if (islands.outer[hole.id] >= 0) entry["island_of"] = islands.outer[hole.id];
-    if (!islands.problem[hole.id].empty()) entry["problem"] = islands.problem[hole.id];
+    if (!islands.note[hole.id].empty()) entry["islands_note"] = islands.note[hole.id];
     list.push_back(std::move(entry));
   }
   const SurfaceCounts counts = surface_counts(mesh);

@@ -6,7 +6,6 @@
 #include "holefill/borders.h"
 #include "holefill/errors.h"
 #include "holefill/io.h"
-#include "holefill/stitch.h"
 
 namespace holefill::viewer {
 namespace {
@@ -22,19 +21,12 @@ bool Session::open(const std::filesystem::path& path) {
   try {
     LoadReport report;
     Mesh mesh = load_mesh(path, &report);
-    const StitchReport stitched = stitch_borders(mesh);
-    load(std::move(mesh), path.filename().string());
+    // The command-line tool's preparation, with its defaults (holefill/prepare.h).
+    PreparedMesh prepared = prepare_mesh(mesh);
     std::string text = "Opened " + path.string();
     for (const auto& warning : report.warnings) text += "\n" + warning;
-    if (stitched.edges_stitched > 0) {
-      text += "\nStitched " + std::to_string(stitched.edges_stitched) + " boundary edges in " +
-              std::to_string(stitched.seams) + (stitched.seams == 1 ? " seam (" : " seams (") +
-              std::to_string(stitched.vertices_merged) + " vertices merged";
-      if (stitched.t_junctions > 0) {
-        text += ", " + std::to_string(stitched.t_junctions) + " T-junctions split";
-      }
-      text += ")";
-    }
+    for (const auto& line : prepared.messages) text += "\n" + line;
+    adopt(std::move(mesh), path.filename().string(), std::move(prepared));
     notice_ = {text, false};
     return true;
   } catch (const std::exception& error) {
@@ -44,18 +36,26 @@ bool Session::open(const std::filesystem::path& path) {
 }
 
 void Session::load(Mesh mesh, std::string name) {
+  PrepareOptions as_it_is;
+  as_it_is.stitch = false;
+  PreparedMesh prepared = prepare_mesh(mesh, as_it_is);
+  adopt(std::move(mesh), std::move(name), std::move(prepared));
+}
+
+void Session::adopt(Mesh mesh, std::string name, PreparedMesh prepared) {
   name_ = std::move(name);
-  holes_ = find_holes(mesh);
-  if (separate_touching_holes(mesh, holes_) > 0) holes_ = find_holes(mesh);
+  holes_ = std::move(prepared.holes);
   loaded_ = std::make_shared<const MeshState>(
       MeshState{std::move(mesh), std::vector<HoleFill>(holes_.size())});
   const Mesh& loaded = loaded_->mesh;
   islands_ = find_islands(loaded, holes_, options_.islands);
   borders_.clear();
-  const auto loops = classify_loops(loaded, holes_, mesh_pieces(loaded));
+  fillable_.assign(holes_.size(), false);
+  for (const int id : prepared.ids_to_fill) fillable_[id] = true;
   for (const auto& hole : holes_) {
     // An island's loop bounds a piece of its own, but it is filled with its hole.
-    borders_.push_back(loops[hole.id].kind == LoopKind::Border && islands_.outer[hole.id] < 0);
+    borders_.push_back(prepared.classes[hole.id].kind == LoopKind::Border &&
+                       islands_.outer[hole.id] < 0);
   }
   log_.clear();
   undo_.clear();
@@ -137,15 +137,11 @@ Notice summary(const FillRequest& request, const std::vector<HoleFill>& fills) {
       "Filled " + std::to_string(filled) + " of " + std::to_string(hole_ids.size()) + " holes";
   if (refused) text += "; " + std::to_string(refused) + " refused (see the hole list)";
   if (intersecting) text += "; " + std::to_string(intersecting) + " intersect the mesh";
-  if (request.left_open) {
-    text += "; " + std::to_string(request.left_open) +
-            " left open with their islands (the hole list says why)";
-  }
   if (request.borders_left) {
     text += "; " + std::to_string(request.borders_left) +
-            " left open as borders (select one and Fill to close it)";
+            " left open as flat pieces' rims (select one and Fill to close it)";
   }
-  return {text + ".", refused > 0 || request.left_open > 0};
+  return {text + ".", refused > 0};
 }
 
 }  // namespace
@@ -155,19 +151,15 @@ std::optional<FillRequest> Session::fill_all_request(std::size_t max_edges) cons
   for (const auto& hole : holes_) {
     if (!unfinished(state_->fills[hole.id]) || closed_by(hole.id) >= 0) continue;
     const bool stepped = has_steps(hole.id);
-    // The border of an open surface is no hole to close, unless the user fills it on its own.
-    if (!stepped && borders_[hole.id]) {
+    // What the preparation leaves out (a flat piece's rim, a kept border) is no hole to close,
+    // unless the user fills it on its own.
+    if (!stepped && !fillable_[hole.id] && islands_.outer[hole.id] < 0) {
       ++request.borders_left;
       continue;
     }
     // An island is filled with its hole, unless that hole was filled without it.
     const int outer = islands_.outer[hole.id];
     if (!stepped && outer >= 0 && !has_steps(outer)) continue;
-    // An island of two holes, or one touching its hole: none of them is filled (islands.h).
-    if (!stepped && !islands_.problem[hole.id].empty()) {
-      ++request.left_open;
-      continue;
-    }
     std::vector<int> joined = default_joined(hole.id);
     std::size_t edges = hole.size();
     for (const int id : joined) edges += holes_[id].size();

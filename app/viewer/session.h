@@ -22,6 +22,7 @@
 
 #include "comparison.h"
 #include "holefill/fill.h"
+#include "holefill/prepare.h"
 #include "holefill/progress.h"
 #include "replay.h"
 
@@ -41,8 +42,7 @@ struct FillRequest {
   // The loops a listed hole is filled with (its islands, the hole it is bridged to); none when
   // absent.
   std::map<int, std::vector<int>> joined;
-  std::size_t left_open = 0;     // holes a problem with their islands keeps open (islands.h)
-  std::size_t borders_left = 0;  // loops taken as an open surface's border (borders.h), skipped
+  std::size_t borders_left = 0;  // loops the preparation leaves out (prepare.h), skipped
 };
 
 // What a fill made, computed apart from the session (Session::compute) and taken in as one
@@ -93,7 +93,8 @@ class Session {
  public:
   // Opens a mesh file. On failure the current mesh stays and notice() says why.
   bool open(const std::filesystem::path& path);
-  // Starts over on `mesh` (named `name` in the UI).
+  // Starts over on `mesh` (named `name` in the UI), taken as it is: holes found, nothing stitched
+  // or welded (open() prepares a file's mesh as the command-line tool does).
   void load(Mesh mesh, std::string name);
   // Writes the current mesh (format by extension: save_mesh); notice() reports either way.
   // A successful save makes the current state the saved one (modified() turns false).
@@ -224,6 +225,8 @@ class Session {
   std::uint64_t comparison_version() const { return comparison_version_; }
 
  private:
+  // Starts over on `mesh` as `prepared` found it (its holes, their kinds, which to fill).
+  void adopt(Mesh mesh, std::string name, PreparedMesh prepared);
   struct Snapshot {
     std::vector<FillStep> log;
     int selected = -1;
@@ -249,7 +252,8 @@ class Session {
   std::shared_ptr<const MeshState> loaded_ = std::make_shared<const MeshState>();
   std::shared_ptr<const MeshState> state_ = loaded_;
   std::vector<Hole> holes_;
-  std::vector<bool> borders_;  // per hole, from classify_loops
+  std::vector<bool> borders_;   // per hole, from classify_loops
+  std::vector<bool> fillable_;  // per hole: among the preparation's ids_to_fill (prepare.h)
   std::vector<FillStep> log_;
   Checkpoints checkpoints_;
   std::vector<Snapshot> undo_;

@@ -30,15 +30,15 @@ std::vector<WeightKind> weights_in_order(WeightKind chosen) {
 
 class Checker {
  public:
-  Checker(const Mesh& mesh, const HolePolygon& polygon, const MeshFaceIndex* around)
-      : mesh_(mesh), polygon_(polygon), around_(around) {}
+  Checker(const Mesh& mesh, const HolePolygon& polygon, const MeshFaceIndex* around, bool exact_too)
+      : mesh_(mesh), polygon_(polygon), around_(around), exact_too_(exact_too) {}
 
   std::vector<IntersectingPair> pairs(const PolygonTriangulation& triangulation) {
     std::vector<std::array<Point, 3>> corners;
     for (const auto& t : triangulation.triangles) {
       corners.push_back({polygon_.points[t[0]], polygon_.points[t[1]], polygon_.points[t[2]]});
     }
-    return triangle_intersections(mesh_, corners, nullptr, grid());
+    return triangle_intersections(mesh_, corners, nullptr, grid(), exact_too_);
   }
 
  private:
@@ -56,6 +56,7 @@ class Checker {
   const Mesh& mesh_;
   const HolePolygon& polygon_;
   const MeshFaceIndex* around_;
+  bool exact_too_;
   std::optional<MeshFaceIndex> own_;
   int checks_ = 0;
 };
@@ -76,12 +77,12 @@ PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
                                          PlannedTriangulation plan,
                                          const TriangulateOptions& options,
                                          const MeshFaceIndex* around, IntersectionAvoidance& report,
-                                         std::size_t& pairs) {
+                                         std::size_t& pairs, bool exact_too) {
   report = {};
   pairs = 0;
   if (!plan.triangulation) return plan;
   HolePolygon polygon = hole_polygon(mesh, hole);
-  Checker checker(mesh, polygon, around);
+  Checker checker(mesh, polygon, around, exact_too);
   std::vector<IntersectingPair> found = checker.pairs(*plan.triangulation);
   pairs = report.first_pairs = found.size();
   if (found.empty()) return plan;

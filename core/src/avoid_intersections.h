@@ -17,11 +17,12 @@ namespace holefill::detail {
 // Returns `plan`, or a triangulation of `hole` that intersects nothing in its place. Reads the
 // mesh only (the hole is not filled yet). `around` holds the mesh's faces by face index (or is
 // null: the mesh is then scanned). Fills `report` and sets `pairs` to the intersecting pairs of
-// the triangulation returned.
+// the triangulation returned. With `exact_too`, the exact test joins the check
+// (patch_intersections.h).
 PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
                                          PlannedTriangulation plan,
                                          const TriangulateOptions& options,
                                          const MeshFaceIndex* around, IntersectionAvoidance& report,
-                                         std::size_t& pairs);
+                                         std::size_t& pairs, bool exact_too = false);
 
 }  // namespace holefill::detail

@@ -52,14 +52,22 @@ void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options) {
   smooth_patch(mesh, fill.patch, umbrella);
 }
 
+// The intersecting pairs that the patch has by the search's check, and, where the patch must be
+// clean (do no harm), by the independent exact check too.
+std::size_t intersections_of(const Mesh& mesh, const Patch& patch,
+                             const detail::MeshFaceIndex* index, const FillOptions& options) {
+  return detail::patch_intersections(mesh, patch, index, !options.allow_intersections).size();
+}
+
 // Why a finished stage must be undone: it made a degenerate triangle, or it made a patch that
 // did not intersect the mesh intersect it. Empty when the stage may stay.
 std::string stage_problem(const Mesh& mesh, const HoleFill& fill,
-                          const detail::MeshFaceIndex* index, std::size_t& intersections) {
+                          const detail::MeshFaceIndex* index, const FillOptions& options,
+                          std::size_t& intersections) {
   if (detail::has_degenerate_face(mesh, fill.patch)) {
     return "it made a degenerate (zero-area) triangle";
   }
-  intersections = count_intersections(mesh, fill.patch, index);
+  intersections = intersections_of(mesh, fill.patch, index, options);
   if (fill.self_intersections == 0 && intersections > 0) {
     return "it made the patch intersect the mesh";
   }
@@ -76,7 +84,8 @@ bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillO
   if (options.avoid_intersections) {
     fill.times.avoid_seconds = timed([&] {
       planned = detail::avoid_intersections(mesh, hole, std::move(planned), options.triangulate,
-                                            index, fill.avoidance, fill.self_intersections);
+                                            index, fill.avoidance, fill.self_intersections,
+                                            !options.allow_intersections);
     });
   }
   TriangulateHoleResult result = apply_triangulation(mesh, hole, planned);
@@ -86,8 +95,8 @@ bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillO
   }
   fill.patch = std::move(*result.patch);
   if (!options.avoid_intersections) {
-    fill.times.check_seconds +=
-        timed([&] { fill.self_intersections = count_intersections(mesh, fill.patch, index); });
+    fill.times.check_seconds += timed(
+        [&] { fill.self_intersections = intersections_of(mesh, fill.patch, index, options); });
   }
   return true;
 }
@@ -110,7 +119,7 @@ void refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
     });
     if (problem.empty()) {
       fill.times.check_seconds +=
-          timed([&] { problem = stage_problem(mesh, fill, index, intersections); });
+          timed([&] { problem = stage_problem(mesh, fill, index, options, intersections); });
     }
     return problem;
   };
@@ -148,7 +157,7 @@ void smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
   std::size_t intersections = 0;
   fill.times.smooth_seconds = timed([&] { smooth(mesh, fill, options.smooth); });
   fill.times.check_seconds +=
-      timed([&] { problem = stage_problem(mesh, fill, index, intersections); });
+      timed([&] { problem = stage_problem(mesh, fill, index, options, intersections); });
   if (problem.empty()) {
     fill.self_intersections = intersections;
     return;
@@ -158,6 +167,47 @@ void smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
   }
   fill.smoothing_note +=
       (fill.smoothing_note.empty() ? "" : "; ") + std::string("smoothing undone: ") + problem;
+}
+
+// Whether the stages after triangulation, tried now on the patch, leave it clear of the mesh; the
+// patch is then put back as triangulated. They are deterministic, so they will again.
+bool later_stages_clear_it(Mesh& mesh, const HoleFill& fill, const FillOptions& options,
+                           const detail::MeshFaceIndex* index) {
+  const detail::StageUndo triangulated(mesh, fill.patch);
+  HoleFill trial = fill;
+  refine_stage(mesh, trial, options, index);
+  trial.patch.stage = Stage::Refined;
+  if (options.last_stage >= Stage::Smoothed) smooth_stage(mesh, trial, options, index);
+  const bool clear = trial.self_intersections == 0;
+  triangulated.undo(mesh, trial.patch);
+  return clear;
+}
+
+// Do no harm, after each stage: a patch that intersects the mesh or an earlier patch (its pairs
+// counted by both tests) stays only when intersections are allowed, or, just triangulated, when
+// the stages still to run clear it (refinement and smoothing move its interior). Otherwise it is
+// taken out of the mesh and the fill fails with the reason. A patch that is no longer the newest
+// part of the mesh (a viewer stepping another hole since) cannot be taken out without moving
+// other elements: it stays, its intersections reported.
+bool may_stay(Mesh& mesh, HoleFill& fill, const FillOptions& options,
+              const detail::MeshFaceIndex* index) {
+  const std::size_t pairs = fill.self_intersections;
+  if (pairs == 0 || options.allow_intersections) return true;
+  if (fill.stage() > Stage::Triangulated && fill.stage() < options.last_stage) return true;
+  if (fill.stage() == Stage::Triangulated && options.last_stage > Stage::Triangulated &&
+      later_stages_clear_it(mesh, fill, options, index)) {
+    return true;
+  }
+  if (!detail::patch_is_newest(mesh, fill.patch)) return true;
+  const detail::StageUndo without_patch(mesh, Patch{});
+  without_patch.undo(mesh, fill.patch);
+  fill.patch = Patch{};
+  fill.self_intersections = 0;
+  fill.refused_intersections = pairs;
+  fill.failure = "every patch tried intersects the mesh (the best in " + std::to_string(pairs) +
+                 (pairs == 1 ? " pair" : " pairs") +
+                 " of triangles), so it is left open; --allow-intersections keeps it";
+  return false;
 }
 
 // advance(), with the triangulation already planned when `plan` is given, and the faces outside
@@ -183,6 +233,7 @@ StageRun advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOp
     case Stage::Smoothed:
       return StageRun::AllDone;
   }
+  if (!may_stay(mesh, fill, options, index)) return StageRun::Failed;
   // Colours, normals, UVs, materials ... of the new elements.
   fill.attributes_note = interpolate_patch_attributes(mesh, fill.patch);
   fill.stats = patch_stats(mesh, fill.patch);
@@ -292,6 +343,7 @@ std::vector<HoleFill> fill_groups(Mesh& mesh, const std::vector<Hole>& holes,
     fill.times.triangulate_seconds += plan_seconds[i];
     fill.boundary_edges = chosen[i].boundary_edges(holes);
     fill.joined_holes.assign(chosen[i].holes.begin() + 1, chosen[i].holes.end());
+    fill.islands_note = chosen[i].note;
     for (const auto f : fill.patch.faces) index.add(f.idx(), detail::box_of(mesh, f));
   }
   return fills;

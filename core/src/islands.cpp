@@ -264,8 +264,8 @@ class LoopsNear {
   std::vector<int> unplaced_;  // the loops without a finite centroid
 };
 
-void add_problem(IslandMap& map, int hole, const std::string& problem) {
-  if (map.problem[hole].empty()) map.problem[hole] = problem;
+void add_note(IslandMap& map, int hole, const std::string& note) {
+  if (map.note[hole].empty()) map.note[hole] = note;
 }
 
 std::string id_list(const std::vector<int>& ids) {
@@ -293,12 +293,12 @@ void assign(IslandMap& map, const std::vector<Loop>& loops, int island,
     return;
   }
   std::sort(containers.begin(), containers.end());
-  const std::string problem = "hole " + std::to_string(island) + " lies inside holes " +
-                              id_list(containers) +
-                              " (an island of two holes): which one it belongs to is ambiguous; "
-                              "fill with island detection off, or choose which holes to fill";
-  add_problem(map, island, problem);
-  for (const int outer : containers) add_problem(map, outer, problem);
+  const std::string note = "loop " + std::to_string(island) + " lies inside holes " +
+                           id_list(containers) +
+                           " (an island of two holes): each is filled without it, and it on its "
+                           "own";
+  add_note(map, island, note);
+  for (const int outer : containers) add_note(map, outer, note);
 }
 
 }  // namespace
@@ -308,7 +308,7 @@ IslandMap find_islands(const Mesh& mesh, const std::vector<Hole>& holes,
   IslandMap map;
   map.islands.resize(holes.size());
   map.outer.assign(holes.size(), -1);
-  map.problem.resize(holes.size());
+  map.note.resize(holes.size());
   if (!options.detect || holes.size() < 2) return map;
   const std::vector<int> component = component_labels(mesh);
   std::vector<Loop> loops;
@@ -328,27 +328,29 @@ IslandMap find_islands(const Mesh& mesh, const std::vector<Hole>& holes,
         containers[i].push_back(static_cast<int>(o));
       }
       if (r == Relation::Touching) {
-        const std::string problem =
-            "hole " + std::to_string(i) + " lies inside hole " + std::to_string(o) +
-            " but touches its boundary (an island touching the outer "
-            "loop): a patch between them would be pinched there; with island "
-            "detection off each loop is closed on its own";
-        add_problem(map, static_cast<int>(i), problem);
-        add_problem(map, static_cast<int>(o), problem);
+        const std::string note = "loop " + std::to_string(i) + " lies inside hole " +
+                                 std::to_string(o) +
+                                 " but touches its boundary (a patch between them would be "
+                                 "pinched there): each is filled on its own";
+        add_note(map, static_cast<int>(i), note);
+        add_note(map, static_cast<int>(o), note);
       }
     }
   }
   for (std::size_t i = 0; i < holes.size(); ++i) {
     if (!containers[i].empty()) assign(map, loops, static_cast<int>(i), containers[i]);
   }
+  // An island with islands of its own: its hole is filled without it, and it with its islands.
   for (std::size_t i = 0; i < holes.size(); ++i) {
     const int outer = map.outer[i];
-    if (outer >= 0 && map.has_islands(static_cast<int>(i))) {
-      const std::string problem = "hole " + std::to_string(i) + " is an island of hole " +
-                                  std::to_string(outer) + " with islands of its own";
-      add_problem(map, static_cast<int>(i), problem);
-      add_problem(map, outer, problem);
-    }
+    if (outer < 0 || !map.has_islands(static_cast<int>(i))) continue;
+    std::erase(map.islands[outer], static_cast<int>(i));
+    map.outer[i] = -1;
+    const std::string note = "loop " + std::to_string(i) + " lies inside hole " +
+                             std::to_string(outer) + " with islands of its own: hole " +
+                             std::to_string(outer) + " is filled without it, and it with its own";
+    add_note(map, static_cast<int>(i), note);
+    add_note(map, outer, note);
   }
   return map;
 }

@@ -96,7 +96,7 @@ std::vector<LoopGroup> group_loops(const Mesh& mesh, const std::vector<Hole>& ho
           groups[group_of[hole]].problem = problem;
           continue;
         }
-        groups.push_back({{}, problem});
+        groups.push_back({{}, problem, {}});
         add_with_islands(groups.size() - 1, islands.outer[hole] >= 0 ? islands.outer[hole] : hole);
       }
       continue;
@@ -114,7 +114,7 @@ std::vector<LoopGroup> group_loops(const Mesh& mesh, const std::vector<Hole>& ho
   }
   for (auto& group : groups) {
     for (const int hole : group.holes) {
-      if (group.problem.empty()) group.problem = islands.problem[hole];
+      if (group.note.empty()) group.note = islands.note[hole];
     }
   }
   return groups;

@@ -5,6 +5,7 @@
 #include <optional>
 #include <utility>
 
+#include "exact_triangle_intersection.h"
 #include "segment_box_tree.h"
 #include "triangle_intersection.h"
 
@@ -28,7 +29,7 @@ Box box_of_corners(const std::array<Point, 3>& corners) {
 
 std::vector<IntersectingPair> triangle_intersections(
     const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
-    const PatchFaceSet* in_patch, const MeshFaceIndex* around) {
+    const PatchFaceSet* in_patch, const MeshFaceIndex* around, bool exact_too) {
   if (triangles.empty()) return {};
   // Candidates: the patch's triangles first, then the mesh's faces near them. The arrays are
   // sized before they are filled, and the mesh faces' corners read again rather than kept: after
@@ -71,13 +72,22 @@ std::vector<IntersectingPair> triangle_intersections(
     scaled.push_back(triangle_from({mesh.point(*fv), mesh.point(*++fv), mesh.point(*++fv)}, scale));
   }
 
+  // The exact test takes the coordinates as stored.
+  const auto corners_of = [&](int o) -> std::array<Point, 3> {
+    if (o < patch_triangles) return triangles[o];
+    auto fv = mesh.cfv_iter(faces[o]);
+    return {mesh.point(*fv), mesh.point(*++fv), mesh.point(*++fv)};
+  };
   std::vector<IntersectingPair> pairs;
   const FaceGrid grid(std::move(boxes));
   for (int i = 0; i < patch_triangles; ++i) {
-    if (!scaled[i]) continue;
+    if (!scaled[i] && !exact_too) continue;
     for (const int o : grid.near(box_of_corners(triangles[i]))) {
       if (o < patch_triangles && o <= i) continue;  // pairs within the patch: once, from the first
-      if (!scaled[o] || !triangles_intersect(*scaled[i], *scaled[o])) continue;
+      const bool found = scaled[i] && scaled[o] && triangles_intersect(*scaled[i], *scaled[o]);
+      if (!found && !(exact_too && exactly_intersect_filtered(triangles[i], corners_of(o)))) {
+        continue;
+      }
       pairs.push_back(o < patch_triangles ? IntersectingPair{i, o, FaceHandle()}
                                           : IntersectingPair{i, -1, faces[o]});
     }
@@ -132,7 +142,7 @@ std::vector<std::pair<int, int>> chords_through_mesh(
 }
 
 std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch& patch,
-                                                  const MeshFaceIndex* around) {
+                                                  const MeshFaceIndex* around, bool exact_too) {
   // A set over the patch's faces, not a flag per face of the mesh: this runs after every stage of
   // every hole, and on a 10M-face mesh clearing and faulting in those flags was most of a fill.
   const PatchFaceSet in_patch(patch);
@@ -143,7 +153,7 @@ std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch&
     for (const auto v : mesh.fv_range(f)) t[c++ % 3] = mesh.point(v);
     triangles.push_back(t);
   }
-  return triangle_intersections(mesh, triangles, &in_patch, around);
+  return triangle_intersections(mesh, triangles, &in_patch, around, exact_too);
 }
 
 }  // namespace holefill::detail

@@ -27,10 +27,12 @@ struct IntersectingPair {
 // triangles are skipped. Faces of the mesh in `in_patch` (may be null: none) are not compared.
 // `around` (when given) holds the mesh's faces outside the patch, by face index, so that only faces
 // near the patch are looked at; otherwise the mesh is scanned. Safe for any finite coordinates:
-// triangles are compared at a power-of-two scale that keeps products finite.
+// triangles are compared at a power-of-two scale that keeps products finite. With `exact_too`, a
+// pair also counts when the independent exact test finds it (exact_triangle_intersection.h), so
+// that what either test finds is found.
 std::vector<IntersectingPair> triangle_intersections(
     const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
-    const PatchFaceSet* in_patch, const MeshFaceIndex* around);
+    const PatchFaceSet* in_patch, const MeshFaceIndex* around, bool exact_too = false);
 
 // The chords (i, k), i < k, between non-neighbouring points of a hole's polygon whose segment
 // passes through the interior of a face of the mesh (any triangle with such a side intersects
@@ -42,6 +44,7 @@ std::vector<std::pair<int, int>> chords_through_mesh(
 
 // triangle_intersections for a patch already in the mesh; `triangle` indexes patch.faces.
 std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch& patch,
-                                                  const MeshFaceIndex* around);
+                                                  const MeshFaceIndex* around,
+                                                  bool exact_too = false);
 
 }  // namespace holefill::detail

@@ -7,10 +7,7 @@
 #include "holefill/triangulate.h"
 
 namespace holefill::detail {
-namespace {
 
-// The patch's faces, new vertices and new edges are the newest elements of the mesh, so deleting
-// them and collecting garbage moves no other element.
 bool patch_is_newest(const Mesh& mesh, const Patch& patch) {
   const int first_face = static_cast<int>(mesh.n_faces() - patch.faces.size());
   const int first_vertex = static_cast<int>(mesh.n_vertices() - patch.new_vertices.size());
@@ -33,8 +30,6 @@ bool patch_is_newest(const Mesh& mesh, const Patch& patch) {
   }
   return oldest_interior_edge >= static_cast<int>(mesh.n_edges() - interior_halfedges / 2);
 }
-
-}  // namespace
 
 bool has_degenerate_face(const Mesh& mesh, const Patch& patch) {
   for (const auto f : patch.faces) {

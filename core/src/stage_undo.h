@@ -11,6 +11,10 @@
 
 namespace holefill::detail {
 
+// Whether the patch's faces, new vertices and new edges are the newest elements of the mesh, so
+// that deleting them and collecting garbage moves no other element.
+bool patch_is_newest(const Mesh& mesh, const Patch& patch);
+
 // Whether some face of the patch is degenerate (zero area, measure_triangle's test).
 bool has_degenerate_face(const Mesh& mesh, const Patch& patch);
 

@@ -11,14 +11,16 @@
 #include <vector>
 
 #include "boundary_points.h"
-#include "deletion_flags.h"
 #include "t_junctions.h"
 #include "vertex_link.h"
+#include "vertex_merge.h"
 
 namespace holefill {
 namespace {
 
 using detail::BoundaryPoints;
+using detail::merge_vertices;
+using detail::VertexGroups;
 
 double default_tolerance(const Mesh& mesh) {
   Point low(INFINITY, INFINITY, INFINITY), high(-INFINITY, -INFINITY, -INFINITY);
@@ -152,26 +154,6 @@ Matches matching_boundary_edges(const Mesh& mesh, const detail::BoundaryIndex& i
   return matches;
 }
 
-// Groups of vertices to merge; each group's root is its lowest index, the vertex kept.
-class VertexGroups {
- public:
-  explicit VertexGroups(std::size_t n) : parent_(n) {
-    std::iota(parent_.begin(), parent_.end(), 0);
-  }
-  int root(int v) {
-    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
-    return v;
-  }
-  void join(int a, int b) {
-    a = root(a);
-    b = root(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<int> parent_;
-};
-
 // Whether merging `members` into `kept` (kept_of maps every vertex to the vertex it becomes)
 // leaves `kept` one fan of consistently oriented faces (vertex_link.h), with no face collapsed
 // and every member within the tolerance.
@@ -187,59 +169,6 @@ bool merge_is_clean(const Mesh& mesh, VertexHandle kept, const std::vector<Verte
     if (a == kept.idx() || b == kept.idx()) return false;  // a face would lose a corner
   }
   return is_one_fan(link);
-}
-
-// Merges every vertex into kept_of[vertex]: the faces of merged vertices are deleted and added
-// again on the kept ones, highest index first, so that garbage collection puts each back at its
-// index. False, with the mesh as it was, when OpenMesh refuses a face.
-bool merge_vertices(Mesh& mesh, const std::vector<int>& kept_of) {
-  std::vector<FaceHandle> faces;
-  std::vector<VertexHandle> merged;
-  for (const auto v : mesh.vertices()) {
-    if (kept_of[v.idx()] == v.idx()) continue;
-    merged.push_back(v);
-    for (const auto f : mesh.vf_range(v)) faces.push_back(f);
-  }
-  std::sort(faces.begin(), faces.end(),
-            [](FaceHandle a, FaceHandle b) { return a.idx() > b.idx(); });
-  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-
-  const Mesh before = mesh;
-  const DeletionFlags flags(mesh);  // after the copy: restoring it brings no flags back
-  for (const auto f : faces) mesh.delete_face(f, false);
-  for (const auto v : merged) mesh.delete_vertex(v, false);
-  const std::size_t edges_before = mesh.n_edges();
-  for (const auto old_face : faces) {
-    std::array<HalfedgeHandle, 3> old_halfedges;
-    std::array<VertexHandle, 3> corners;
-    HalfedgeHandle h = before.halfedge_handle(old_face);
-    for (int i = 0; i < 3; ++i, h = before.next_halfedge_handle(h)) {
-      old_halfedges[i] = h;
-      corners[i] = VertexHandle(kept_of[before.from_vertex_handle(h).idx()]);
-    }
-    const FaceHandle face = mesh.add_face(corners[0], corners[1], corners[2]);
-    if (!face.is_valid()) {
-      mesh = before;
-      return false;
-    }
-    mesh.copy_all_properties(old_face, face, true);
-    mesh.status(face).set_deleted(false);
-    // The face starts at the same corner as before, so it is written out the same way.
-    mesh.set_halfedge_handle(face, mesh.find_halfedge(corners[0], corners[1]));
-    for (int i = 0; i < 3; ++i) {
-      const HalfedgeHandle now = mesh.find_halfedge(corners[i], corners[(i + 1) % 3]);
-      mesh.copy_all_properties(old_halfedges[i], now, true);
-      mesh.status(now).set_deleted(false);
-      const EdgeHandle edge = mesh.edge_handle(now);
-      if (edge.idx() >= static_cast<int>(edges_before) &&
-          mesh.is_boundary(mesh.opposite_halfedge_handle(now))) {  // made by this face
-        mesh.copy_all_properties(before.edge_handle(old_halfedges[i]), edge, true);
-        mesh.status(edge).set_deleted(false);
-      }
-    }
-  }
-  mesh.garbage_collection();
-  return true;
 }
 
 // Stitches the boundary edges that lie on each other end to end (stitch_borders without the

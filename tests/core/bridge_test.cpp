@@ -1,6 +1,6 @@
 // Gaps between surfaces (bridge.h, HoleSelection::bridges): a capsule or tube cut in two and two
-// facing sheets are joined by one band of the right genus; holes too far apart, islands touching
-// their hole and islands of two holes are refused with the mesh left as it was.
+// facing sheets are joined by one band of the right genus; holes too far apart are refused with the
+// mesh left as it was; islands touching their hole and islands of two holes are left out of it.
 #include "holefill/bridge.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +9,7 @@
 #include <functional>
 #include <numbers>
 
+#include "exact_intersections.h"
 #include "holefill/fill.h"
 #include "holefill/holes.h"
 #include "holefill/stats.h"
@@ -245,27 +246,31 @@ TEST(Bridge, RefusesHolesTooFarApart) {
   expect_refused(before, selection, "too far apart to bridge");
 }
 
-TEST(Bridge, RefusesAnIslandTouchingItsHole) {
+TEST(Bridge, AnIslandTouchingItsHoleIsLeftOutOfItAndNothingIsCutThrough) {
   Mesh before;
   add_sheet(before, Point(0, 0, 0), Point(1, 1, 0), 0.05, true, box(0.3, 0.7, 0.3, 0.7));
   add_sheet(before, Point(0.3, 0.4, 0), Point(0.5, 0.6, 0), 0.05, true, nullptr);
   before = without_isolated_vertices(before);
   const auto holes = find_holes(before);
   ASSERT_EQ(holes.size(), 3u);
-  HoleSelection selection;
-  selection.hole_ids = {hole_near(holes, Point(0.5, 0.5, 0)), hole_near(holes, Point(0.4, 0.5, 0))};
-  expect_refused(before, selection, "touches its boundary");
-  // As the refusal says, with island detection off each loop is closed on its own.
-  expect_refused(before, selection, "with island detection off each loop is closed on its own");
-  FillOptions off;
-  off.islands.detect = false;
+  const int hole = hole_near(holes, Point(0.5, 0.5, 0)),
+            island = hole_near(holes, Point(0.4, 0.5, 0));
   Mesh after = before;
-  for (const auto& fill : fill_holes(after, holes, off, selection)) {
-    EXPECT_FALSE(fill.failed()) << fill.failure;
+  const auto fills = fill_holes(after, holes, {}, HoleSelection{{hole, island}, 0});
+  ASSERT_EQ(fills.size(), 2u);  // each loop on its own, the note saying why
+  for (const auto& fill : fills) {
+    EXPECT_NE(fill.islands_note.find("touches its boundary"), std::string::npos)
+        << fill.islands_note;
+    // In the sheet's plane, the hole's cap would lie on the island and the island's on its own
+    // back: both are left open as they were.
+    EXPECT_TRUE(fill.failed());
+    EXPECT_GT(fill.refused_intersections, 0u);
   }
+  EXPECT_EQ(after.n_faces(), before.n_faces());
+  EXPECT_TRUE(original_part_unchanged(before, after));
 }
 
-TEST(Bridge, RefusesAnIslandOfTwoHoles) {
+TEST(Bridge, EachHoleIsFilledWithoutAnIslandOfTwoHoles) {
   // Two sheets facing the same way, with overlapping holes, and a piece between them.
   Mesh before;
   add_sheet(before, Point(0, 0, 0), Point(1, 1, 0), 0.05, true, box(0.3, 0.7, 0.3, 0.7));
@@ -274,11 +279,23 @@ TEST(Bridge, RefusesAnIslandOfTwoHoles) {
   before = without_isolated_vertices(before);
   const auto holes = find_holes(before);
   ASSERT_EQ(holes.size(), 5u);
-  HoleSelection selection;
-  selection.hole_ids = {hole_near(holes, Point(0.5, 0.5, 0)),
-                        hole_near(holes, Point(0.55, 0.5, 0.2)),
-                        hole_near(holes, Point(0.525, 0.5, 0.1))};
-  expect_refused(before, selection, "an island of two holes");
+  const int lower = hole_near(holes, Point(0.5, 0.5, 0)),
+            upper = hole_near(holes, Point(0.55, 0.5, 0.2)),
+            piece = hole_near(holes, Point(0.525, 0.5, 0.1));
+  Mesh after = before;
+  const auto fills = fill_holes(after, holes, {}, HoleSelection{{lower, upper, piece}, 0});
+  ASSERT_EQ(fills.size(), 3u);
+  for (const auto& fill : fills) {
+    EXPECT_NE(fill.islands_note.find("an island of two holes"), std::string::npos)
+        << fill.islands_note;
+    EXPECT_TRUE(fill.joined_holes.empty());
+    // The holes' caps lie in their sheets' planes, clear of the piece; the piece's rim has no cap
+    // but its own back.
+    EXPECT_EQ(fill.failed(), fill.hole_id == piece) << fill.hole_id << ": " << fill.failure;
+    EXPECT_EQ(testing::exact_patch_intersections(after, fill.patch.faces), 0u);
+  }
+  EXPECT_TRUE(original_part_unchanged(before, after));
+  EXPECT_EQ(find_holes(after).size(), 3u);  // the two sheets' borders and the piece's rim
 }
 
 }  // namespace

@@ -170,13 +170,14 @@ TEST(Fill, NeverDuplicatesAnEdgeThatAlreadyJoinsTwoBoundaryVertices) {
 }
 
 TEST(Fill, FillsAPinchedLoopSoThatItsVertexBecomesManifold) {
-  // Two triangles touching at one vertex: a single boundary loop through it twice.
+  // Two faces of a triangular bipyramid touching at one equator vertex (v[0]): a single boundary
+  // loop through it twice.
   Mesh before;
   VertexHandle v[5];
-  const Point points[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+  const Point points[] = {{-0.5, 0.866, 0}, {1, 0, 0}, {0, 0, 1}, {-0.5, -0.866, 0}, {0, 0, -1}};
   for (int i = 0; i < 5; ++i) v[i] = before.add_vertex(points[i]);
-  before.add_face(v[0], v[1], v[2]);
-  before.add_face(v[0], v[3], v[4]);
+  before.add_face(v[1], v[0], v[2]);
+  before.add_face(v[3], v[0], v[4]);
   const auto holes = find_holes(before);
   ASSERT_EQ(holes.size(), 1u);
   EXPECT_TRUE(holes[0].pinched);

@@ -84,7 +84,7 @@ TEST(Islands, FindsTheCapLeftInsideAnAnnulusCut) {
   EXPECT_EQ(map.islands[0], std::vector<int>{1});  // the larger loop is the outer one
   EXPECT_EQ(map.outer[1], 0);
   EXPECT_TRUE(map.islands[1].empty());
-  EXPECT_TRUE(map.problem[0].empty() && map.problem[1].empty());
+  EXPECT_TRUE(map.note[0].empty() && map.note[1].empty());
   IslandOptions off;
   off.detect = false;
   EXPECT_TRUE(find_islands(mesh, holes, off).islands[0].empty());
@@ -114,7 +114,7 @@ TEST(Islands, EachOfManyHolesFindsItsOwnIslandAmongItsNeighbours) {
   int outer_holes = 0;
   for (const auto& hole : holes) {
     const int id = hole.id;
-    EXPECT_TRUE(map.problem[id].empty()) << map.problem[id];
+    EXPECT_TRUE(map.note[id].empty()) << map.note[id];
     if (map.islands[id].empty()) {
       // An island: inside exactly one hole, of the same sphere (the copy's outer surface).
       ASSERT_GE(map.outer[id], 0) << id;

@@ -170,6 +170,7 @@ Triangulated triangulate_holes(const Mesh& holed) {
   Triangulated result{holed, {}};
   FillOptions triangulation;
   triangulation.last_stage = Stage::Triangulated;
+  triangulation.allow_intersections = true;  // every patch, to refine (the ragged disk's border)
   result.fills = fill_holes(result.mesh, find_holes(holed), triangulation);
   return result;
 }

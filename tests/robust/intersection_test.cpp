@@ -1,12 +1,13 @@
-// Self-intersections: a patch that must cross the mesh is filled and reported for its
-// hole; where there is room for a valid patch, the fill makes none, and a stage that would make
-// one is undone.
+// Self-intersections: a hole whose every patch must cross the mesh is left open with the reason
+// (or, when intersections are allowed, filled and reported for its hole); where there is room for a
+// valid patch, the fill makes none, and a stage that would make one is undone.
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
+#include "exact_intersections.h"
 #include "fill_guarantees.h"
 #include "holefill/fill.h"
 #include "holefill/holes.h"
@@ -83,11 +84,17 @@ Mesh terrain_with_hole() {
       [](const Point& c) { return std::hypot(c[0] - 0.5, c[1] - 0.5) < 0.25; });
 }
 
-TEST(PatchIntersections, AForcedIntersectionIsFilledAndReportedForItsHole) {
-  Mesh before = terrain_with_hole();
-  // A pin standing through the middle of the hole: any patch across the hole must cross it.
-  add_tetrahedron(before, {Point(0.5, 0.5, -0.5), Point(0.52, 0.5, 0.5), Point(0.48, 0.52, 0.5),
-                           Point(0.48, 0.48, 0.5)});
+// The terrain's hole with a pin standing through its middle: any patch across the hole must
+// cross the pin.
+Mesh terrain_with_pinned_hole() {
+  Mesh mesh = terrain_with_hole();
+  add_tetrahedron(mesh, {Point(0.5, 0.5, -0.5), Point(0.52, 0.5, 0.5), Point(0.48, 0.52, 0.5),
+                         Point(0.48, 0.48, 0.5)});
+  return mesh;
+}
+
+TEST(PatchIntersections, AHoleEveryPatchOfWhichCutsTheMeshIsLeftOpenWithTheReason) {
+  const Mesh before = terrain_with_pinned_hole();
   const auto holes = find_holes(before);
   ASSERT_EQ(holes.size(), 2u);
   Mesh mesh = before;
@@ -95,28 +102,59 @@ TEST(PatchIntersections, AForcedIntersectionIsFilledAndReportedForItsHole) {
   inner.hole_ids = {1};
   const auto fills = fill_holes(mesh, holes, {}, inner);
   ASSERT_EQ(fills.size(), 1u);
-  EXPECT_FALSE(fills[0].failed()) << fills[0].failure;
-  EXPECT_GT(fills[0].self_intersections, 0u);
-  EXPECT_EQ(fills[0].self_intersections, count_patch_intersections(mesh, fills[0].patch));
+  EXPECT_TRUE(fills[0].failed());
+  EXPECT_NE(fills[0].failure.find("every patch tried intersects the mesh"), std::string::npos)
+      << fills[0].failure;
+  EXPECT_GT(fills[0].refused_intersections, 0u);
+  EXPECT_EQ(fills[0].self_intersections, 0u);
+  EXPECT_TRUE(fills[0].patch.faces.empty());
+  // Nothing was added: the same elements, positions and loops as before.
+  EXPECT_EQ(mesh.n_faces(), before.n_faces());
+  EXPECT_EQ(mesh.n_vertices(), before.n_vertices());
+  EXPECT_EQ(find_holes(mesh).size(), 2u);
   EXPECT_EQ(check_fill_guarantees(before, holes, mesh, fills), "");
 }
 
-TEST(PatchIntersections, TheCliSaysWhichHoleIntersectsAndExitsWithFive) {
-  Mesh mesh = terrain_with_hole();
-  add_tetrahedron(mesh, {Point(0.5, 0.5, -0.5), Point(0.52, 0.5, 0.5), Point(0.48, 0.52, 0.5),
-                         Point(0.48, 0.48, 0.5)});
+TEST(PatchIntersections, AllowingIntersectionsKeepsTheBestPatchAndReportsIt) {
+  const Mesh before = terrain_with_pinned_hole();
+  const auto holes = find_holes(before);
+  Mesh mesh = before;
+  FillOptions options;
+  options.allow_intersections = true;
+  const auto fills = fill_holes(mesh, holes, options, HoleSelection{{1}, 0});
+  ASSERT_EQ(fills.size(), 1u);
+  EXPECT_FALSE(fills[0].failed()) << fills[0].failure;
+  EXPECT_GT(fills[0].self_intersections, 0u);
+  EXPECT_EQ(fills[0].self_intersections, count_patch_intersections(mesh, fills[0].patch));
+  EXPECT_GT(exact_patch_intersections(mesh, fills[0].patch.faces), 0u);
+  EXPECT_EQ(check_fill_guarantees(before, holes, mesh, fills), "");
+}
+
+TEST(PatchIntersections, TheCliLeavesTheHoleOpenAndExitsWithOneUnlessAllowed) {
   // Per process: two test runs on one machine must not share it.
   const auto dir = std::filesystem::temp_directory_path() /
                    ("holefill_robust_cli_intersections_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  save_mesh(mesh, dir / "pin.obj");
-  const CliRun run = run_cli({"fill", (dir / "pin.obj").string(), "-o", (dir / "out.obj").string(),
-                              "--holes", "1", "--report", (dir / "report.json").string()});
+  save_mesh(terrain_with_pinned_hole(), dir / "pin.obj");
+  const std::vector<std::string> fill = {
+      "fill",     (dir / "pin.obj").string(),    "-o", (dir / "out.obj").string(), "--holes", "1",
+      "--report", (dir / "report.json").string()};
+  const CliRun refused = run_cli(fill);
+  EXPECT_EQ(refused.code, cli::kSomeHolesNotFilled) << refused.err;
+  EXPECT_NE(refused.err.find("hole 1 not filled: every patch tried intersects the mesh"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_EQ(load_mesh(dir / "out.obj").n_faces(), load_mesh(dir / "pin.obj").n_faces());
+  const std::string refused_json = read_file(dir / "report.json");
+  EXPECT_NE(refused_json.find("\"refused_intersections\": "), std::string::npos) << refused_json;
+  EXPECT_NE(refused_json.find("\"filled\": false"), std::string::npos) << refused_json;
+
+  std::vector<std::string> allowed = fill;
+  allowed.push_back("--allow-intersections");
+  const CliRun run = run_cli(allowed);
   EXPECT_EQ(run.code, cli::kPatchesIntersect) << run.err;
   EXPECT_NE(run.err.find("hole 1: the patch intersects the mesh"), std::string::npos) << run.err;
-  std::ifstream report(dir / "report.json");
-  const std::string json((std::istreambuf_iterator<char>(report)),
-                         std::istreambuf_iterator<char>());
+  const std::string json = read_file(dir / "report.json");
   EXPECT_NE(json.find("\"self_intersections\": "), std::string::npos);
   EXPECT_EQ(json.find("\"self_intersections\": 0"), std::string::npos) << json;
   // The avoidance tried and could not help: the pin crosses every patch.

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -46,6 +47,12 @@ inline std::string obj_text(const std::vector<Point>& points,
 }
 
 inline std::string obj_text(const Soup& soup) { return obj_text(soup.points, soup.faces); }
+
+// The whole contents of a file ("" when it cannot be read).
+inline std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 // The reason load_mesh_from_memory refuses `bytes` with, or "" when it reads them.
 inline std::string refusal(const std::string& bytes, const std::string& name) {

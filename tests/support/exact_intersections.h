@@ -1,8 +1,6 @@
-// An independent, exact check of patch intersections for the tests: GMP rationals on
-// the coordinates as stored, no tolerance, and a different method from the library's
-// (triangle_intersection.cpp): each triangle's section by the other's plane, compared along the
-// planes' common line. Two triangles intersect when the interior of one meets the other, closed;
-// touching along sides or at corners does not count.
+// The tests' brute-force use of the library's exact check (core/src/exact_triangle_intersection.h):
+// every face of the mesh against every patch face, no index, so that a face the index would miss
+// is still compared.
 #pragma once
 
 #include <array>
@@ -12,7 +10,7 @@
 
 namespace holefill::testing {
 
-// Whether the two triangles intersect; false when either is degenerate (zero area, exactly).
+// Whether the two triangles intersect, exactly (detail::exactly_intersect).
 bool exactly_intersect(const std::array<Point, 3>& a, const std::array<Point, 3>& b);
 
 // Pairs (patch face, other face of the mesh or later patch face) that exactly intersect: the

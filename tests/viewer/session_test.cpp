@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "holefill/io.h"
 #include "test_sessions.h"
 
 namespace holefill::viewer {
@@ -40,7 +41,7 @@ TEST(Session, StitchesSeamsWhenItOpensAMesh) {
   std::filesystem::remove(file);
   EXPECT_EQ(session.mesh().n_vertices(), 4u);
   EXPECT_EQ(session.holes().size(), 1u);
-  EXPECT_NE(session.notice().text.find("Stitched 1 boundary edges"), std::string::npos)
+  EXPECT_NE(session.notice().text.find("stitched 1 boundary edges"), std::string::npos)
       << session.notice().text;
 }
 
@@ -256,19 +257,28 @@ TEST(Session, ComparisonStartsFromTheHoleBeforeItsOwnSteps) {
   EXPECT_EQ(comparison->right.fill.stats.new_faces, session.fill(0).stats.new_faces);
 }
 
-TEST(Session, FillAllLeavesTheBorderOfAnOpenSurfaceUnlessItIsFilledOnItsOwn) {
+TEST(Session, FillAllLeavesOpenABorderEveryCapOfWhichCutsTheSurfaceAsTheCliDoes) {
+  const auto file = std::filesystem::path(HOLEFILL_TEST_ASSETS) / "ragged_disk.obj";
   Session session;
-  ASSERT_TRUE(session.open(std::filesystem::path(HOLEFILL_TEST_ASSETS) / "ragged_disk.obj"));
+  ASSERT_TRUE(session.open(file));
   ASSERT_TRUE(session.is_border(0));
-  ASSERT_TRUE(session.fill_all());
-  EXPECT_EQ(session.fill(0).stage(), Stage::Original);
+  EXPECT_FALSE(session.fill_all());  // the border is tried, and refused
+  EXPECT_TRUE(session.fill(0).failed());
+  EXPECT_NE(session.fill(0).failure.find("every patch tried intersects the mesh"),
+            std::string::npos)
+      << session.fill(0).failure;
   EXPECT_EQ(session.fill(1).stage(), Stage::Smoothed);
-  EXPECT_NE(session.notice().text.find("1 left open as borders"), std::string::npos)
-      << session.notice().text;
+  EXPECT_NE(session.notice().text.find("1 refused"), std::string::npos) << session.notice().text;
   EXPECT_FALSE(session.fill_all_request());
-  session.select(0);
-  ASSERT_TRUE(session.fill_selected());
-  EXPECT_EQ(session.fill(0).stage(), Stage::Smoothed);
+  // The command-line tool writes the same mesh.
+  Mesh cli = load_mesh(file);
+  const PreparedMesh prepared = prepare_mesh(cli);
+  fill_holes(cli, prepared.holes, {}, HoleSelection{prepared.ids_to_fill, 0});
+  ASSERT_EQ(cli.n_faces(), session.mesh().n_faces());
+  ASSERT_EQ(cli.n_vertices(), session.mesh().n_vertices());
+  for (const auto v : cli.vertices()) {
+    ASSERT_EQ(cli.point(v), session.mesh().point(v)) << v.idx();
+  }
 }
 
 TEST(Session, SavesTheFilledMesh) {

@@ -29,6 +29,11 @@ struct FillOptions {
   // Re-triangulate a hole whose best triangulation intersects the mesh or itself, forbidding the
   // triangles that do (IntersectionAvoidance). Off: the weight's best is always kept.
   bool avoid_intersections = true;
+  // Do no harm: a patch that intersects the mesh or an earlier patch is never kept. The hole whose
+  // every triangulation tried does (by the search's check or by an independent exact one) is left
+  // open, its fill failed with the reason (HoleFill::refused_intersections). True keeps the best
+  // patch anyway, its intersections counted in HoleFill::self_intersections.
+  bool allow_intersections = false;
   bool operator==(const FillOptions&) const = default;
 };
 
@@ -65,10 +70,15 @@ struct HoleFill {
   std::string smoothing_note;   // e.g. why fairing fell back to umbrella smoothing
   std::string refinement_note;  // e.g. why refinement was undone
   std::string attributes_note;  // what the patch could not be given, e.g. UVs across a seam
+  std::string islands_note;     // why a loop inside the hole was filled apart (islands.h)
   // Pairs (patch triangle, other triangle of the mesh or of the patch) that intersect other than
   // along shared vertices and edges, after the last stage run. Stages that would make a patch
   // that did not intersect the mesh intersect it are undone (and say so in their note).
   std::size_t self_intersections = 0;
+  // When the hole was left open because its best patch intersected the mesh (do no harm,
+  // FillOptions::allow_intersections): the intersecting pairs that patch had (the search's count,
+  // or the exact check's where only that one found them). 0 otherwise.
+  std::size_t refused_intersections = 0;
   IntersectionAvoidance avoidance;
 
   Stage stage() const { return patch.stage; }

@@ -9,10 +9,12 @@
 //   - every vertex of I lies within `reach` times O's radius (its largest distance from its
 //     centroid) of that plane, the height a patch over O could bulge to.
 // When several holes qualify and one lies inside the others, the innermost one takes the island;
-// otherwise (an island of two holes) neither is filled with it, and both, and the island, carry
-// a problem saying so. A loop that would be an island but comes within a tenth of the
-// surrounding edge length of O's loop (or shares a vertex with it) touches O: O carries that
-// problem too. Filling then joins each hole with its islands by bridge edges (bridge.h).
+// otherwise (an island of two holes) neither takes it: each is filled without it, and it is a loop
+// filled on its own. So is a loop that would be an island but comes within a tenth of the
+// surrounding edge length of O's loop (or shares a vertex with it): it touches O, and a patch
+// between them would be pinched; and an island with islands of its own (its hole is filled without
+// it, and it with its islands). Each such doubt leaves a note on the loops it concerns. Filling
+// then joins each hole with its islands by bridge edges (bridge.h).
 #pragma once
 
 #include <string>
@@ -33,9 +35,10 @@ struct IslandOptions {
 struct IslandMap {
   std::vector<std::vector<int>> islands;  // the islands of each hole (empty for most)
   std::vector<int> outer;                 // the hole each island lies in; -1 for other loops
-  // Why a hole cannot be filled (as an outer hole or as an island): e.g. an island of two holes,
-  // an island touching its hole's loop. Empty for the others.
-  std::vector<std::string> problem;
+  // Why a hole is filled without a loop that looked like its island, or why a loop is filled on
+  // its own though it lies inside a hole (an island of two holes, one touching its hole's loop,
+  // one with islands of its own). Empty for the others.
+  std::vector<std::string> note;
 
   bool has_islands(int hole) const { return !islands[hole].empty(); }
 };

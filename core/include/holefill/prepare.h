@@ -1,0 +1,57 @@
+// Preparing a loaded mesh for filling, the same for the command-line tool, the viewer and the
+// library's users: stitch seams (stitch.h) and weld vertices where holes touch (weld.h), drop small
+// pieces when asked (components.h), find the holes (holes.h) and tell holes from borders and flat
+// pieces (borders.h); and the lines that tell the user what was found.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "holefill/borders.h"
+#include "holefill/components.h"
+#include "holefill/holes.h"
+#include "holefill/mesh.h"
+#include "holefill/stitch.h"
+#include "holefill/weld.h"
+
+namespace holefill {
+
+struct PrepareOptions {
+  bool stitch = true;                   // stitch seams and weld touching vertices (off: neither)
+  StitchOptions stitch_options;         // the tolerance of both
+  std::size_t remove_pieces_up_to = 0;  // remove pieces of at most this many faces (0: none)
+  bool keep_borders = false;            // leave the loops that look like borders out of the fill
+  bool operator==(const PrepareOptions&) const = default;
+};
+
+// The mesh's pieces, as the messages and reports count them (their face lists are not kept).
+struct PieceCounts {
+  std::size_t pieces = 0;
+  std::size_t lone_triangles = 0;
+  std::size_t small_pieces = 0;
+  std::size_t largest_small_piece = 0;  // faces of the largest small piece (or lone triangle)
+};
+
+struct PreparedMesh {
+  bool stitched = false;  // stitching and welding ran
+  StitchReport stitch;
+  WeldReport weld;
+  RemovedPieces removed;
+  PieceCounts pieces;
+  std::vector<Hole> holes;         // find_holes after the steps above, touching holes separated
+  std::vector<LoopClass> classes;  // one per hole
+  std::vector<int> ids_to_fill;    // the holes to fill: no flat piece, no border when kept
+  std::size_t borders_kept = 0;
+  std::size_t pinched_loops = 0;  // loops passing more than once through one vertex
+  // What the steps did and found, one line each, for the user (no file name, no newline). Runs of
+  // lines of one kind are summarised past a few, so a million lone triangles give a few lines.
+  std::vector<std::string> messages;
+};
+
+// Runs the steps on `mesh` in the order above. Expects a mesh without deleted elements (as
+// load_mesh gives it). Vertex indices may change where vertices are merged or pieces removed
+// (stitch.h, weld.h, components.h say how); every face kept keeps its corners and properties.
+PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options = {});
+
+}  // namespace holefill

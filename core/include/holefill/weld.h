@@ -1,0 +1,30 @@
+// Welding boundary vertices that lie at one position where no pair of boundary edges joins them,
+// so that stitching (stitch.h) does not apply: a loop that touches itself, or two holes cut next to
+// each other, in a mesh exported with split vertices. Such a loop passes twice through one position
+// and no patch across it can be added; welded, the vertex becomes a pinch whose gaps
+// separate_touching_holes (holes.h) turns into loops of their own, each filled apart, so that the
+// filled vertex is one fan again.
+#pragma once
+
+#include <cstddef>
+
+#include "holefill/mesh.h"
+
+namespace holefill {
+
+struct WeldReport {
+  std::size_t positions = 0;        // positions where vertices were welded
+  std::size_t vertices_welded = 0;  // vertices removed, each welded into one it lay on
+  std::size_t positions_left = 0;   // positions whose vertices were left apart (below)
+};
+
+// Welds boundary vertices at most `tolerance` apart (0: the same coordinates) that belong to one
+// piece of the mesh (faces joined by edges: separate objects touching at a point stay apart), when
+// no two of them share an edge or a neighbour (a face would collapse, or an edge be doubled) and
+// the faces around the welded vertex stay consistently oriented. Of each group the vertex with the
+// lowest index is kept, with its position and properties, and the faces of the others are put on
+// it with their properties; face indices are kept, vertex indices as stitch_borders keeps them.
+// Expects a mesh without deleted elements; a mesh with nothing to weld is left untouched.
+WeldReport weld_touching_vertices(Mesh& mesh, double tolerance);
+
+}  // namespace holefill

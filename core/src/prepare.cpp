@@ -1,0 +1,142 @@
+#include "holefill/prepare.h"
+
+#include <cstdio>
+#include <utility>
+
+namespace holefill {
+namespace {
+
+// Loops of one kind get a line each up to this many; the rest one line with their count.
+constexpr std::size_t kLinesPerKind = 5;
+
+std::string general(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+std::string counted(std::size_t n, const std::string& what) {
+  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
+void tell_stitching(const StitchReport& report, std::vector<std::string>& out) {
+  if (report.edges_stitched > 0) {
+    std::string line = "stitched " + std::to_string(report.edges_stitched) + " boundary edges in " +
+                       counted(report.seams, "seam") + " (" +
+                       std::to_string(report.vertices_merged) + " vertices merged, ";
+    if (report.t_junctions > 0) {
+      line += std::to_string(report.t_junctions) +
+              " T-junctions split (a vertex of one side inside an edge of the other), ";
+    }
+    out.push_back(line + "at most " + general(report.largest_distance) + " apart; tolerance " +
+                  general(report.tolerance) + ")");
+  }
+  if (report.edges_left_apart > 0) {
+    out.push_back(std::to_string(report.edges_left_apart) +
+                  " boundary edges lie on others but were left apart (more than two meet there, "
+                  "or joining them would make the mesh non-manifold)");
+  }
+}
+
+void tell_welding(const WeldReport& report, std::vector<std::string>& out) {
+  if (report.positions > 0) {
+    out.push_back("welded " + counted(report.vertices_welded, "boundary vertex") +
+                  " into the vertex at the same position (" + counted(report.positions, "place") +
+                  " where holes touch), so that each hole there can be filled");
+  }
+  if (report.positions_left > 0) {
+    out.push_back(counted(report.positions_left, "place") +
+                  " where boundary vertices share a position were left apart (welding would "
+                  "double an edge or collapse a face)");
+  }
+}
+
+void tell_pieces(const PreparedMesh& prepared, const PrepareOptions& options,
+                 std::vector<std::string>& out) {
+  if (prepared.removed.pieces > 0) {
+    out.push_back("removed " + std::to_string(prepared.removed.pieces) + " pieces of at most " +
+                  std::to_string(options.remove_pieces_up_to) + " faces (" +
+                  std::to_string(prepared.removed.faces) + " faces, " +
+                  std::to_string(prepared.removed.vertices) + " vertices)");
+  }
+  const PieceCounts& p = prepared.pieces;
+  if (p.lone_triangles + p.small_pieces == 0) return;
+  out.push_back((p.lone_triangles ? counted(p.lone_triangles, "lone triangle") : "") +
+                (p.lone_triangles && p.small_pieces ? " and " : "") +
+                (p.small_pieces ? counted(p.small_pieces, "small floating piece") : "") +
+                " beside the surface (--remove-small-components " +
+                std::to_string(p.largest_small_piece) + " removes them)");
+}
+
+// The lines about loops of one kind: each of the first few, then how many more there are.
+class LoopLines {
+ public:
+  explicit LoopLines(std::string more) : more_(std::move(more)) {}
+  void add(std::string line) {
+    if (count_++ < kLinesPerKind) lines_.push_back(std::move(line));
+  }
+  void flush(std::vector<std::string>& out) const {
+    out.insert(out.end(), lines_.begin(), lines_.end());
+    if (count_ > kLinesPerKind) {
+      out.push_back("... and " + std::to_string(count_ - kLinesPerKind) + " more " + more_);
+    }
+  }
+
+ private:
+  std::string more_;
+  std::size_t count_ = 0;
+  std::vector<std::string> lines_;
+};
+
+}  // namespace
+
+PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options) {
+  PreparedMesh prepared;
+  if (options.stitch) {
+    prepared.stitched = true;
+    prepared.stitch = stitch_borders(mesh, options.stitch_options);
+    tell_stitching(prepared.stitch, prepared.messages);
+    prepared.weld = weld_touching_vertices(mesh, prepared.stitch.tolerance);
+    tell_welding(prepared.weld, prepared.messages);
+  }
+  if (options.remove_pieces_up_to > 0) {
+    prepared.removed = remove_small_pieces(mesh, options.remove_pieces_up_to);
+  }
+  {  // the pieces' lists (8 bytes a face) are freed before the holes are filled
+    const MeshPieces pieces = mesh_pieces(mesh);
+    prepared.pieces = {pieces.pieces.size(), pieces.lone_triangles, pieces.small_pieces,
+                       pieces.largest_small_piece};
+    tell_pieces(prepared, options, prepared.messages);
+    prepared.holes = find_holes(mesh);
+    if (separate_touching_holes(mesh, prepared.holes) > 0) prepared.holes = find_holes(mesh);
+    prepared.classes = classify_loops(mesh, prepared.holes, pieces);
+  }
+  LoopLines flat("loops that are not holes (the rims of flat pieces)");
+  LoopLines kept("loops kept open as borders");
+  LoopLines borders("loops that look like the border of an open surface");
+  for (std::size_t i = 0; i < prepared.holes.size(); ++i) {
+    const Hole& hole = prepared.holes[i];
+    const LoopClass& c = prepared.classes[i];
+    const std::string loop = "loop " + std::to_string(hole.id);
+    if (hole.repeated_vertices > 0) ++prepared.pinched_loops;
+    if (c.kind == LoopKind::FlatPiece) {
+      flat.add(loop + " is not a hole but " + c.reason);
+    } else if (c.kind == LoopKind::Border && options.keep_borders) {
+      ++prepared.borders_kept;
+      kept.add(loop + " kept open as a border: " + c.reason);
+    } else {
+      if (c.kind == LoopKind::Border) {
+        borders.add(loop + " looks like the border of an open surface (" + c.reason +
+                    "); filled only where a cap does not cut the surface (--keep-borders leaves "
+                    "it open)");
+      }
+      prepared.ids_to_fill.push_back(hole.id);
+    }
+  }
+  flat.flush(prepared.messages);
+  kept.flush(prepared.messages);
+  borders.flush(prepared.messages);
+  return prepared;
+}
+
+}  // namespace holefill

@@ -1,0 +1,113 @@
+#include "holefill/weld.h"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "boundary_points.h"
+#include "holefill/components.h"
+#include "vertex_link.h"
+#include "vertex_merge.h"
+
+namespace holefill {
+namespace {
+
+// The piece (components.h) of a vertex, through any face around it; -1 for a vertex of no face.
+int piece_of(const Mesh& mesh, const MeshPieces& pieces, VertexHandle v) {
+  for (const auto f : mesh.vf_range(v)) return pieces.piece_of_face[f.idx()];
+  return -1;
+}
+
+bool has_repeats(std::vector<int> values) {
+  std::sort(values.begin(), values.end());
+  return std::adjacent_find(values.begin(), values.end()) != values.end();
+}
+
+// Whether welding `group` (lowest index first) into its first vertex keeps every face a triangle
+// and every edge used at most once each way: the group's link edges (vertex_link.h), neighbours
+// renamed as they will be, never name the kept vertex, and no neighbour starts or ends two of them.
+// Unlike a stitch's merge, the welded vertex may carry several fans: the pinch that the holes are
+// then separated at.
+bool weld_is_clean(const Mesh& mesh, const std::vector<VertexHandle>& group,
+                   const std::vector<int>& kept_of) {
+  std::vector<std::pair<int, int>> link;
+  for (const auto v : group) {
+    add_link_edges(
+        mesh, v, [&](int u) { return kept_of[u]; }, link);
+  }
+  const int kept = group.front().idx();
+  std::vector<int> starts, ends;
+  for (const auto& [a, b] : link) {
+    if (a == kept || b == kept || a == b) return false;
+    starts.push_back(a);
+    ends.push_back(b);
+  }
+  return !has_repeats(std::move(starts)) && !has_repeats(std::move(ends));
+}
+
+// Groups of boundary vertices within the tolerance of each other, on one piece, no two joined by
+// an edge; each group lowest index first, groups in the order of their lowest vertex.
+std::vector<std::vector<VertexHandle>> touching_groups(const Mesh& mesh, double tolerance) {
+  const detail::BoundaryIndex index(mesh);
+  const detail::BoundaryPoints& points = index.points;
+  if (points.vertices.size() < 2) return {};
+  const MeshPieces pieces = mesh_pieces(mesh);
+  detail::VertexGroups groups(mesh.n_vertices());
+  std::vector<std::pair<std::size_t, double>> found;
+  bool any = false;
+  for (std::size_t s = 0; s < points.vertices.size(); ++s) {
+    const VertexHandle a = points.vertices[s];
+    detail::points_near(index.tree, mesh.point(a), tolerance, found);
+    for (const auto& [other, squared] : found) {
+      const VertexHandle b = points.vertices[other];
+      if (b.idx() <= a.idx() || (mesh.point(b) - mesh.point(a)).norm() > tolerance) continue;
+      if (mesh.find_halfedge(a, b).is_valid()) continue;
+      if (piece_of(mesh, pieces, a) != piece_of(mesh, pieces, b)) continue;
+      groups.join(a.idx(), b.idx());
+      any = true;
+    }
+  }
+  if (!any) return {};
+  std::map<int, std::vector<VertexHandle>> by_root;
+  for (const auto v : points.vertices) by_root[groups.root(v.idx())].push_back(v);
+  std::vector<std::vector<VertexHandle>> result;
+  for (auto& [root, group] : by_root) {
+    if (group.size() < 2) continue;
+    std::sort(group.begin(), group.end());
+    result.push_back(std::move(group));
+  }
+  return result;
+}
+
+}  // namespace
+
+WeldReport weld_touching_vertices(Mesh& mesh, double tolerance) {
+  WeldReport report;
+  const auto groups = touching_groups(mesh, tolerance);
+  if (groups.empty()) return report;
+  std::vector<int> kept_of(mesh.n_vertices());
+  for (const auto v : mesh.vertices()) kept_of[v.idx()] = v.idx();
+  for (const auto& group : groups) {
+    for (const auto v : group) kept_of[v.idx()] = group.front().idx();
+  }
+  // A group whose weld is not clean stays apart; the others' checks see it as it stays.
+  for (const auto& group : groups) {
+    if (weld_is_clean(mesh, group, kept_of)) continue;
+    for (const auto v : group) kept_of[v.idx()] = v.idx();
+    ++report.positions_left;
+  }
+  for (const auto& group : groups) {
+    if (kept_of[group.back().idx()] == group.back().idx()) continue;
+    ++report.positions;
+    report.vertices_welded += group.size() - 1;
+  }
+  if (report.positions == 0) return report;
+  if (!detail::merge_vertices(mesh, kept_of)) {  // OpenMesh refused a face: nothing welded
+    report.positions_left += report.positions;
+    report.positions = report.vertices_welded = 0;
+  }
+  return report;
+}
+
+}  // namespace holefill
