@@ -121,6 +121,11 @@ void add_selection_options(CLI::App& command, FillArguments& a) {
       ->default_str("");
   command.add_option("--stage", a.stage, "stop after this stage")
       ->check(CLI::IsMember(names(kStages)));
+  command
+      .add_option("--threads", a.options.threads,
+                  "threads that plan holes at once (0: every core this process\n"
+                  "may run on); the output is the same whatever the number")
+      ->transform(whole_number(0, 4096));
   command.add_flag("--allow-intersections", a.options.allow_intersections,
                    "keep a hole's best patch even when it intersects the mesh\n"
                    "(exit 5); by default such a hole is left open (exit 1)");

@@ -28,7 +28,8 @@ Json options_json(const FillOptions& o) {
           {"smooth_iterations", o.smooth.iterations},
           {"smooth_step", o.smooth.step},
           {"last_stage", to_string(o.last_stage)},
-          {"allow_intersections", o.allow_intersections}};
+          {"allow_intersections", o.allow_intersections},
+          {"threads", o.threads}};
 }
 
 Json fill_json(const HoleFill& fill) {

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "advance_unscaled.h"
+#include "available_cores.h"
 #include "avoid_intersections.h"
 #include "hole_triangulation.h"
 #include "holefill/attributes.h"
@@ -286,8 +287,14 @@ std::vector<HoleFill> fill_groups(Mesh& mesh, const std::vector<Hole>& holes,
     if (progress) progress->set_fraction(0.5 * static_cast<double>(steps) / chosen.size());
   };
   const auto cancelled = [&] { return progress && progress->cancelled(); };
+  const auto threads = static_cast<unsigned>(
+      std::clamp<std::size_t>(options.threads ? options.threads : detail::available_cores(), 1,
+                              std::max<std::size_t>(1, chosen.size())));
   TriangulateOptions triangulate = options.triangulate;
   triangulate.progress = progress;  // a cancel also stops a long dynamic program between rows
+  // A number of threads asked for bounds the dynamic programs' too: the threads left over when
+  // there are fewer holes than threads go to each hole's program.
+  if (options.threads && !triangulate.threads) triangulate.threads = options.threads / threads;
   // What a worker throws (std::bad_alloc) stops the others and is rethrown here, the mesh
   // unchanged.
   std::exception_ptr failure;
@@ -305,8 +312,6 @@ std::vector<HoleFill> fill_groups(Mesh& mesh, const std::vector<Hole>& holes,
       if (!failure) failure = std::current_exception();
     }
   };
-  const unsigned threads =
-      std::min<unsigned>(std::max(1u, std::thread::hardware_concurrency()), chosen.size());
   std::vector<std::thread> pool;
   pool.reserve(threads);
   for (unsigned t = 1; t < threads; ++t) {

@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "available_cores.h"
 #include "bound_scan.h"
 #include "dp_step.h"
 #include "row_wavefront.h"
@@ -275,7 +276,7 @@ class HelperThreads {
 
  private:
   static inline std::atomic<int> spare_{
-      std::max(1, static_cast<int>(std::thread::hardware_concurrency())) - 1};
+      static_cast<int>(available_cores()) - 1};
   int count_ = 0;
 };
 
@@ -284,7 +285,7 @@ class HelperThreads {
 // the rows wait for each other: two threads sharing two cores with five other processes took
 // 1.5x as long as one thread (bench/NOTEBOOK.md).
 int idle_cores() {
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int cores = static_cast<int>(available_cores());
   double load = 0.0;
   if (getloadavg(&load, 1) != 1) return cores;
   return std::clamp(static_cast<int>(std::floor(cores + 1 - load)), 1, cores);

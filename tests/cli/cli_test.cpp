@@ -64,6 +64,15 @@ TEST_F(Cli, FillKeepsTheOriginalPartBitForBit) {
   EXPECT_TRUE(testing::original_part_unchanged(load_mesh(kAssets / "sphere.obj"), load_mesh(out)));
 }
 
+TEST_F(Cli, TheOutputIsTheSameWhateverTheNumberOfThreads) {
+  const std::string bunny = (kAssets / "bunny.obj").string();
+  const std::string one = in_dir("one.obj"), many = in_dir("many.obj");
+  ASSERT_EQ(run_cli({"fill", bunny, "-o", one, "--threads", "1"}).code, cli::kOk);
+  ASSERT_EQ(run_cli({"fill", bunny, "-o", many, "--threads", "7"}).code, cli::kOk);
+  EXPECT_EQ(read_text(one), read_text(many));
+  EXPECT_EQ(run_cli({"fill", bunny, "-o", many, "--threads", "-1"}).code, cli::kUsage);
+}
+
 TEST_F(Cli, RemeshOnChangesOnlyThePatchAndIsReported) {
   const std::string bunny = (kAssets / "bunny.obj").string();
   const std::string plain = in_dir("plain.obj"), off = in_dir("off.obj"), on = in_dir("on.obj"),

@@ -34,6 +34,10 @@ struct FillOptions {
   // open, its fill failed with the reason (HoleFill::refused_intersections). True keeps the best
   // patch anyway, its intersections counted in HoleFill::self_intersections.
   bool allow_intersections = false;
+  // Threads that plan holes at once (each hole's dynamic program on one of them, or, with fewer
+  // holes than threads, a large hole's program on several). 0: every core this process may run
+  // on (its affinity mask). The result is the same whatever the number.
+  unsigned threads = 0;
   bool operator==(const FillOptions&) const = default;
 };
 

@@ -10,6 +10,8 @@
 #include <system_error>
 #include <thread>
 
+#include "../available_cores.h"
+
 namespace holefill::io {
 
 // From this many faces on, the assembly uses a second thread where the machine has more than one
@@ -18,7 +20,7 @@ inline constexpr std::size_t kTwoThreadsFrom = std::size_t{1} << 15;
 
 // Whether assembling `faces` faces uses two threads, from `from` faces on.
 inline bool use_two_threads(std::size_t faces, std::size_t from) {
-  return faces >= from && std::thread::hardware_concurrency() > 1;
+  return faces >= from && detail::available_cores() > 1;
 }
 
 // Runs `second` on a thread of its own and `first` here when `two`, else (or when no thread can
