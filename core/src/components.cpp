@@ -54,7 +54,7 @@ MeshPieces mesh_pieces(const Mesh& mesh) {
 RemovedPieces remove_small_pieces(Mesh& mesh, std::size_t max_faces) {
   RemovedPieces removed;
   const MeshPieces found = mesh_pieces(mesh);
-  const DeletionFlags flags(mesh);
+  const detail::DeletionFlags flags(mesh);
   std::vector<VertexHandle> corners;
   for (const auto& piece : found.pieces) {
     if (piece.largest || piece.face_count > max_faces) continue;

@@ -6,7 +6,7 @@
 
 #include "holefill/mesh.h"
 
-namespace holefill {
+namespace holefill::detail {
 
 // Requests the mesh's status flags on construction and releases them on destruction. OpenMesh
 // counts the requests, so these nest, and flags the mesh had before stay. Precondition for the
@@ -43,4 +43,4 @@ inline bool is_deleted(const Mesh& mesh, HalfedgeHandle h) {
   return mesh.has_halfedge_status() && mesh.status(h).deleted();
 }
 
-}  // namespace holefill
+}  // namespace holefill::detail

@@ -14,9 +14,6 @@
 
 namespace holefill::detail {
 
-// A triangle is degenerate when its smallest angle's sine is below this (about 1e-10 rad).
-inline constexpr double kDegenerateSine = 1e-10;
-
 using geometry::unit_normal;
 
 inline bool is_zero(const Point& p) { return p[0] == 0.0 && p[1] == 0.0 && p[2] == 0.0; }

@@ -219,7 +219,7 @@ FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options
   }
   for (const auto v : patch.new_vertices) {
     if (!v.is_valid() || static_cast<std::size_t>(v.idx()) >= mesh.n_vertices() ||
-        is_deleted(mesh, v)) {
+        detail::is_deleted(mesh, v)) {
       result.problem = "the patch lists a vertex that is not in the mesh";
       return result;
     }

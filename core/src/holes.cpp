@@ -114,7 +114,7 @@ std::vector<Hole> find_holes(const Mesh& mesh) {
   std::vector<Hole> holes;
   std::vector<bool> visited(mesh.n_halfedges(), false);
   for (const auto h : mesh.halfedges()) {
-    if (visited[h.idx()] || !mesh.is_boundary(h) || is_deleted(mesh, h)) continue;
+    if (visited[h.idx()] || !mesh.is_boundary(h) || detail::is_deleted(mesh, h)) continue;
     Hole hole = hole_through(mesh, h);
     for (const auto loop_h : hole.halfedges) visited[loop_h.idx()] = true;
     holes.push_back(std::move(hole));

@@ -162,13 +162,13 @@ bool merge_is_clean(const Mesh& mesh, VertexHandle kept, const std::vector<Verte
   std::vector<std::pair<int, int>> link;
   for (const auto v : members) {
     if ((mesh.point(v) - mesh.point(kept)).norm() > tolerance) return false;
-    add_link_edges(
+    detail::add_link_edges(
         mesh, v, [&](int u) { return kept_of[u]; }, link);
   }
   for (const auto& [a, b] : link) {
     if (a == kept.idx() || b == kept.idx()) return false;  // a face would lose a corner
   }
-  return is_one_fan(link);
+  return detail::is_one_fan(link);
 }
 
 // Stitches the boundary edges that lie on each other end to end (stitch_borders without the

@@ -52,14 +52,14 @@ double geometry::angle_between_normals(const Point& n1, const Point& n2) {
 }
 
 WeightValue weight_value(const TriangulationQuality& quality, const TriangulateOptions& options) {
-  const double chord = weight_key::chord_of_angle(quality.max_dihedral);
+  const double chord = detail::weight_key::chord_of_angle(quality.max_dihedral);
   const std::uint64_t degenerate = static_cast<std::uint64_t>(quality.degenerate)
-                                   << weight_key::kDegenerateShift;
+                                   << detail::weight_key::kDegenerateShift;
   return detail::with_weight(options, [&](const auto& weight) {
     return WeightValue{
-        weight_key::combine(degenerate,
-                            weight_key::combine(weight.angle_key(std::tan(quality.min_angle)),
-                                                weight.dihedral_key(chord))),
+        detail::weight_key::combine(
+            degenerate, detail::weight_key::combine(weight.angle_key(std::tan(quality.min_angle)),
+                                                    weight.dihedral_key(chord))),
         quality.area};
   });
 }

@@ -85,7 +85,7 @@ int vertex_left_pinched(const Mesh& mesh, const Hole& hole,
   std::unordered_map<int, std::vector<std::pair<int, int>>> links;
   for (const auto& [v, count] : passes) {
     if (count > 1)
-      add_link_edges(
+      detail::add_link_edges(
           mesh, VertexHandle(v), [](int u) { return u; }, links[v]);
   }
   for (const auto& t : triangles) {
@@ -97,7 +97,7 @@ int vertex_left_pinched(const Mesh& mesh, const Hole& hole,
     }
   }
   for (const auto& [v, link] : links) {
-    if (!is_one_fan(link)) return v;
+    if (!detail::is_one_fan(link)) return v;
   }
   return -1;
 }
@@ -192,7 +192,7 @@ TriangulateHoleResult apply_triangulation(Mesh& mesh, const Hole& hole,
     if (!face.is_valid()) {
       // The topology around the loop (e.g. a pinched vertex) refused a triangle: take back the
       // ones added so far. They are the newest elements, so garbage collection moves no others.
-      const DeletionFlags flags(mesh);
+      const detail::DeletionFlags flags(mesh);
       for (const auto added : patch.faces) mesh.delete_face(added, false);
       mesh.garbage_collection();
       result.failure = "the mesh around this hole refused a patch triangle (non-manifold vertex)";

@@ -10,7 +10,7 @@
 
 #include "holefill/mesh.h"
 
-namespace holefill {
+namespace holefill::detail {
 
 // Whether the link edges form one path, or one cycle of at least three edges (two faces
 // (v, a, b) and (v, b, a) would be one face twice), with no neighbour left or entered twice.
@@ -51,4 +51,4 @@ void add_link_edges(const Mesh& mesh, VertexHandle v, Rename&& name,
   }
 }
 
-}  // namespace holefill
+}  // namespace holefill::detail

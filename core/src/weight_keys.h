@@ -23,7 +23,7 @@
 
 #include "holefill/weights.h"
 
-namespace holefill {
+namespace holefill::detail {
 
 namespace weight_key {
 
@@ -147,4 +147,4 @@ struct MaxMinWeight {
   }
 };
 
-}  // namespace holefill
+}  // namespace holefill::detail

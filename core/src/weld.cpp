@@ -33,7 +33,7 @@ bool weld_is_clean(const Mesh& mesh, const std::vector<VertexHandle>& group,
                    const std::vector<int>& kept_of) {
   std::vector<std::pair<int, int>> link;
   for (const auto v : group) {
-    add_link_edges(
+    detail::add_link_edges(
         mesh, v, [&](int u) { return kept_of[u]; }, link);
   }
   const int kept = group.front().idx();

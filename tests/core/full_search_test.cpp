@@ -102,7 +102,8 @@ std::vector<std::array<int, 3>> row_by_row_reference(const HolePolygon& input, W
           for (int m = i + 1; m < k; ++m) {
             const WeightValue& left = value[cell(i, m)];
             const WeightValue& right = value[cell(m, k)];
-            if (left.key == weight_key::kInfeasible || right.key == weight_key::kInfeasible) {
+            if (left.key == detail::weight_key::kInfeasible ||
+                right.key == detail::weight_key::kInfeasible) {
               continue;
             }
             detail::try_apex<false>(weight, polygon, i, m, k, left,
@@ -112,7 +113,7 @@ std::vector<std::array<int, 3>> row_by_row_reference(const HolePolygon& input, W
         }
         apex[cell(i, k)] = best.apex;
         value[cell(i, k)] =
-            best.apex >= 0 ? best.value : WeightValue{weight_key::kInfeasible, INFINITY};
+            best.apex >= 0 ? best.value : WeightValue{detail::weight_key::kInfeasible, INFINITY};
         if (best.apex >= 0) {
           normal[cell(i, k)] =
               detail::unit_normal(polygon.points[i], polygon.points[best.apex], polygon.points[k]);
@@ -285,8 +286,9 @@ TEST(WeightKey, CombineAddsDegenerateCountsAndTakesTheLargerOfEachAngleLane) {
   const std::vector<std::uint64_t> lane_values{0, 1, 0x7FFF, 0x8000, 0xFFFE, 0xFFFF};
   auto draw_key = [&] {
     // Degenerate counts stay below 0x8000 (fewer points than kMaxPolygonSize, two sides).
-    std::uint64_t key = (rng() % 0x8000) << weight_key::kDegenerateShift;
-    for (const int shift : {weight_key::kLaneA, weight_key::kLaneB, weight_key::kLaneC}) {
+    std::uint64_t key = (rng() % 0x8000) << detail::weight_key::kDegenerateShift;
+    for (const int shift :
+         {detail::weight_key::kLaneA, detail::weight_key::kLaneB, detail::weight_key::kLaneC}) {
       key |= (rng() % 2 ? lane_values[rng() % lane_values.size()] : rng() & 0xFFFF) << shift;
     }
     return key;
@@ -297,7 +299,7 @@ TEST(WeightKey, CombineAddsDegenerateCountsAndTakesTheLargerOfEachAngleLane) {
     for (const int shift : {0, 16, 32}) {
       expected |= std::max((a >> shift) & 0xFFFF, (b >> shift) & 0xFFFF) << shift;
     }
-    ASSERT_EQ(weight_key::combine(a, b), expected) << std::hex << a << " " << b;
+    ASSERT_EQ(detail::weight_key::combine(a, b), expected) << std::hex << a << " " << b;
   }
 }
 
@@ -309,23 +311,25 @@ TEST(WeightKey, LaneMaxBoundsEveryWeightsCombinationFromBelow) {
   auto draw_lane = [&] {
     return rng() % 2 ? lane_values[rng() % lane_values.size()] : rng() & 0xFFFF;
   };
-  const MaxMinWeight max_min;
-  const LiepaWeight liepa;
+  const detail::MaxMinWeight max_min;
+  const detail::LiepaWeight liepa;
   for (int trial = 0; trial < 20000; ++trial) {
     // Degenerate counts below 0x8000, as in combine's test; Liepa sets lane A alone.
     const std::uint64_t count_a = (rng() % 0x8000) << 48, count_b = (rng() % 0x8000) << 48;
     const std::uint64_t a = count_a | draw_lane() << 32 | draw_lane() << 16 | draw_lane();
     const std::uint64_t b = count_b | draw_lane() << 32 | draw_lane() << 16 | draw_lane();
-    const std::uint64_t bound = weight_key::lane_max(a, b);
+    const std::uint64_t bound = detail::weight_key::lane_max(a, b);
     ASSERT_EQ(bound, lane_max_by_hand(a, b)) << std::hex << a << " " << b;
     EXPECT_GE(bound, std::max(a, b));
     EXPECT_LE(bound, max_min.combine(a, b));
     const std::uint64_t liepa_a = count_a | (a & 0xFFFF'0000'0000),
                         liepa_b = count_b | (b & 0xFFFF'0000'0000);
-    EXPECT_LE(weight_key::lane_max(liepa_a, liepa_b), liepa.combine(liepa_a, liepa_b));
-    EXPECT_LE(weight_key::lane_max(count_a, count_b), AreaWeight::combine(count_a, count_b));
+    EXPECT_LE(detail::weight_key::lane_max(liepa_a, liepa_b), liepa.combine(liepa_a, liepa_b));
+    EXPECT_LE(detail::weight_key::lane_max(count_a, count_b),
+              detail::AreaWeight::combine(count_a, count_b));
   }
-  EXPECT_EQ(weight_key::lane_max(weight_key::kInfeasible, 0), weight_key::kInfeasible);
+  EXPECT_EQ(detail::weight_key::lane_max(detail::weight_key::kInfeasible, 0),
+            detail::weight_key::kInfeasible);
 }
 
 }  // namespace

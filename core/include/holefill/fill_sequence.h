@@ -31,7 +31,8 @@ class FillSequence {
   // while they go hole by hole, each hole from its first stage; a step that returns to a hole
   // left before, or starts from a hole begun before the sequence, makes this and later steps
   // scan the mesh as advance_joined() does. A mesh whose scale the stages cannot take as it is
-  // (safe_scale.h) is scaled at every step, as advance_joined() does.
+  // (a largest coordinate above 2^200 or below 2^-200, near where squared lengths overflow or
+  // underflow) is scaled by a power of two at every step, as advance_joined() does.
   StageRun step(const std::vector<const Hole*>& loops, HoleFill& fill, const FillOptions& options);
 
  private:

@@ -4,7 +4,7 @@
 // ("holefill:attributes", "holefill:v:NAME", "holefill:f:NAME"): see attributes.h; code that
 // re-adds elements should copy all properties (copy_all_properties) so they survive.
 // A Mesh carries no status flags (OpenMesh's 4 bytes on every element, a quarter of a big mesh):
-// code that deletes elements requests them for the deletion's duration (deletion_flags.h), so
+// the library's code that deletes elements requests them only for the deletion's duration, so
 // between operations no element is marked deleted and the iterators skip none.
 #pragma once
 

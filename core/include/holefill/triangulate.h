@@ -33,7 +33,7 @@ struct HolePolygon {
   std::vector<std::array<int, 3>> forbidden_triangles;
 };
 
-// The restricted search for large holes (triangulate_restricted.cpp): chords inside pockets of
+// The restricted search for large holes: chords inside pockets of
 // consecutive boundary vertices, between anchors every pocket_edges/2 vertices, and to each
 // vertex's nearest neighbours in space.
 struct RestrictedSearch {

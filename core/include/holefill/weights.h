@@ -4,8 +4,10 @@
 //   liepa  (Liepa 2003): (largest dihedral angle, total area), lexicographic.
 //   maxmin (Wei, Wu & Pang 2010): (smallest interior angle, largest dihedral angle, total area):
 //          a larger smallest angle is better, then a smaller dihedral, then a smaller area.
-// Every weight puts the number of degenerate (zero-area) triangles first, so that a degenerate
-// candidate is the worst choice under any weight, never a NaN and never a "free" zero area.
+// Every weight puts the number of degenerate triangles first (kDegenerateSine: a smallest angle
+// under about 1e-10 rad, whatever the triangle's size; zero-area and NaN triangles among them),
+// so that a degenerate candidate is the worst choice under any weight, never a NaN and never a
+// "free" zero area.
 // maxmin then compares how far the largest dihedral angle exceeds a limit (45 degrees by
 // default): the smallest angle alone happily folds a patch over itself on a curved hole, or cuts
 // across a tube, so a triangulation that stays under the limit always wins, and among those that
@@ -14,7 +16,8 @@
 // hole against 90, with the same triangle angles.)
 //
 // A weight's value is one 64-bit key (the degenerate count, then up to three quantised angle
-// terms, compared as an integer) and the area; weight_keys.h in core/src packs it.
+// terms, compared as an integer) and the area; how the key's bits are laid out is the library's
+// own business (only the order of WeightValues is promised).
 #pragma once
 
 #include <cmath>
@@ -31,6 +34,10 @@ std::string to_string(WeightKind kind);
 bool parse_weight(const std::string& text, WeightKind& kind);
 
 inline constexpr double kDefaultFoldLimit = std::numbers::pi / 4.0;
+
+// A triangle is degenerate when twice its area is at most kDegenerateSine times its longest edge
+// squared: the sine of its smallest angle, up to a factor of at most 2, is below about 1e-10.
+inline constexpr double kDegenerateSine = 1e-10;
 
 // The largest angle difference that quantisation can tie, radians, for the smallest angle and for
 // dihedral angles below 90 degrees. A weight's leading angle term (liepa's largest dihedral,
