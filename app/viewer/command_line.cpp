@@ -74,6 +74,11 @@ void add_options(CLI::App& app, Parsed& parsed) {
   app.add_option("--screenshot", c.screenshot, "render, save the window as PNG and exit")
       ->type_name("OUT.png")
       ->group(kScripted);
+  app.add_option("--state-file", c.state_file,
+                 "keep the window's state in this file (frames, keys received,\nidle, busy, "
+                 "question, title, message) for automation")
+      ->type_name("PATH")
+      ->group(kScripted);
   app.add_option("--ui-scale", c.ui_scale,
                  "text and panel scale (default: the monitor's;\nCtrl +/- change it)")
       ->type_name("S")

@@ -16,10 +16,13 @@
 #include "camera.h"
 #include "dialogs.h"
 #include "file_dialog.h"
+#include "frame_pacer.h"
 #include "interaction.h"
 #include "panels.h"
 #include "renderer.h"
+#include "request_queue.h"
 #include "screenshot.h"
+#include "state_report.h"
 #include "ui_style.h"
 
 namespace holefill::viewer {
@@ -41,6 +44,8 @@ class ImGuiBackends {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; no imgui.ini beside user files
+    // The window draws on events only (FramePacer): a blinking cursor would need frames.
+    ImGui::GetIO().ConfigInputTextCursorBlink = false;
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
@@ -61,6 +66,7 @@ class FileDialogs {
  public:
   FileDialogs() : native_program_(find_native_dialog_program()) {}
   bool builtin() const { return native_program_.empty(); }
+  bool running() const { return native_.running(); }
   void update(FileActions& files) {
     if (builtin()) return;
     if (files.dialog() && !native_.running()) {
@@ -217,7 +223,8 @@ class FrameLoop {
         files_(files),
         worker_(worker),
         timer_(command.report_frame_time, started),
-        title_(files.window_title()) {
+        title_(files.window_title()),
+        state_(command.state_file) {
     ui_.content_scale = command.ui_scale > 0.0f ? command.ui_scale : window.content_scale();
     apply_ui_scale(ui_.scale = ui_scale(ui_.content_scale, ui_.zoom));
   }
@@ -241,6 +248,7 @@ class FrameLoop {
       if (const auto status = take_worker_result()) return *status;
       // The comparison is made on the worker too, whenever it is out of date and nothing runs.
       if (!scripted_) start_comparison(worker_, session_);
+      carry_out_waiting();
       const SceneArea area = scene_area(window_, ui_.scale);
       camera_.set_viewport(area.size);
       const FrameKeys keys = handle_input(area);
@@ -255,6 +263,9 @@ class FrameLoop {
       // ImGui lays windows out over its first frames; a few frames settle the picture.
       if (scripted_ && frame >= command_.frames - 1) finish_script(frame);
       window_.swap();
+      pacer_.frame_drawn();
+      report_state(frame + 1, false);
+      wait_for_events(frame + 1);
     }
     return status_;
   }
@@ -274,9 +285,14 @@ class FrameLoop {
   // (the program ends, as it does without a window).
   std::optional<int> take_worker_result() {
     if (!worker_.poll()) return std::nullopt;
+    pacer_.wake();
     if (!worker_.error().empty()) session_.tell({worker_.error(), true});
-    // A comparison cancelled (Esc) turns the comparison off rather than starting it again.
-    if (worker_.cancelled() && session_.comparison_request()) session_.set_compare(false);
+    if (worker_.cancelled()) {
+      // A comparison cancelled (Esc) turns the comparison off rather than starting it again.
+      if (session_.comparison_request()) session_.set_compare(false);
+      session_.tell({worker_.label() + ": cancelled, mesh unchanged", false});
+      waiting_.clear();
+    }
     if (!files_.opened_path().empty()) return std::nullopt;
     std::fprintf(stderr, "holefill-viewer: %s\n", session_.notice().text.c_str());
     return 3;
@@ -285,15 +301,21 @@ class FrameLoop {
   FrameKeys handle_input(const SceneArea& area) {
     FrameKeys keys;
     for (const auto& event : window_.poll()) {
-      if (event.kind == InputEvent::Kind::Key) keys.keys.push_back(event.key);
-      // While the worker computes from the session, nothing else may change it: the keys
-      // (but F12) wait, the mouse still turns the view.
+      const bool key = event.kind == InputEvent::Kind::Key;
+      if (key) keys.keys.push_back(event.key);
+      // Esc while work runs cancels it (the progress box) rather than deselecting.
+      if (key && event.key == kKeyEscape && worker_.busy()) continue;
       interaction_.handle(event, area, ImGui::GetIO().WantCaptureMouse || files_.busy(),
-                          ImGui::GetIO().WantCaptureKeyboard || files_.busy() || worker_.busy(),
-                          camera_, session_);
+                          ImGui::GetIO().WantCaptureKeyboard || files_.busy(), camera_, session_);
     }
     for (const auto& request : interaction_.take_requests()) {
-      carry_out(request, files_, session_, worker_, ui_);
+      // While the worker computes from the session nothing else may change it: what would
+      // waits, in order, and is said to wait.
+      if (waiting_.defer(request, worker_.busy())) {
+        session_.tell({waiting_notice(request), false});
+      } else {
+        carry_out(request, files_, session_, worker_, ui_);
+      }
     }
     dialogs_.update(files_);
     return keys;
@@ -318,6 +340,48 @@ class FrameLoop {
       title_ = files_.window_title();
       window_.set_title(title_.c_str());
     }
+  }
+
+  // Something runs or waits: the frames go on (the progress moves, the queue empties).
+  bool working() const { return worker_.busy() || dialogs_.running() || !waiting_.empty(); }
+
+  // The first request that waited for the worker, once it is free.
+  void carry_out_waiting() {
+    if (files_.busy()) return;
+    if (const auto request = waiting_.next(worker_.busy()))
+      carry_out(*request, files_, session_, worker_, ui_);
+  }
+
+  // Sleeps in the window system until there is something to draw (FramePacer). A scripted run
+  // and --frames draw every frame.
+  void wait_for_events(int frames) {
+    if (scripted_ || command_.report_frame_time) return;
+    for (;;) {
+      const auto wait = pacer_.wait_before_frame(working());
+      if (wait && *wait == 0.0) return;
+      if (!wait) report_state(frames, true);
+      if (window_.wait(wait)) {
+        pacer_.wake();
+        return;
+      }
+      if (wait) return;  // work runs: its progress moves
+    }
+  }
+
+  void report_state(int frames, bool idle) {
+    ViewerState state;
+    state.frames = frames;
+    state.keys = window_.keys_received();
+    state.idle = idle;
+    state.busy = worker_.busy();
+    state.waiting = static_cast<int>(waiting_.size());
+    state.question = files_.question() == FileActions::Question::SaveChanges ? "save-changes"
+                     : files_.question() == FileActions::Question::Overwrite ? "overwrite"
+                                                                             : "none";
+    state.dialog = files_.dialog().has_value();
+    state.title = title_;
+    state.notice = session_.notice().text;
+    state_.update(state);
   }
 
   // Moves the camera where the panel or the comparison asked.
@@ -376,6 +440,9 @@ class FrameLoop {
   BuiltinDialog builtin_dialog_;
   FrameTimer timer_;
   std::string title_;
+  FramePacer pacer_;
+  StateReport state_;
+  RequestQueue waiting_;
   int status_ = 0;
 };
 

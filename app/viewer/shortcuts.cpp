@@ -39,6 +39,12 @@ bool works_anywhere(Command command) {
          command == Command::ZoomOut || command == Command::ZoomReset;
 }
 
+const char* describe(Command command) {
+  const auto found = std::find_if(std::begin(kShortcuts), std::end(kShortcuts),
+                                  [&](const auto& s) { return s.command == command; });
+  return found == std::end(kShortcuts) ? "" : found->what;
+}
+
 std::optional<Command> command_for_key(int key, bool control, bool shift) {
   const auto found = std::find_if(std::begin(kShortcuts), std::end(kShortcuts), [&](const auto& s) {
     return s.key == key && s.control == control && s.shift == shift;

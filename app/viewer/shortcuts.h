@@ -42,6 +42,9 @@ std::span<const Shortcut> shortcuts();
 // the text size.
 bool works_anywhere(Command command);
 
+// What `command` does, as the help says it ("undo", "fill all holes (up to the edge limit)").
+const char* describe(Command command);
+
 // The command bound to `key` with these modifiers, if any.
 std::optional<Command> command_for_key(int key, bool control, bool shift);
 

@@ -8,9 +8,18 @@
 namespace holefill::viewer {
 
 struct WindowCallbacks {
+  // Every callback goes through here: any event wakes the frame loop.
   static Window& of(GLFWwindow* handle) {
-    return *static_cast<Window*>(glfwGetWindowUserPointer(handle));
+    Window& window = *static_cast<Window*>(glfwGetWindowUserPointer(handle));
+    window.woken_ = true;
+    return window;
   }
+  // Events that only ask for a new frame (Dear ImGui's own callbacks, chained after these,
+  // read what they carry).
+  static void wake(GLFWwindow* handle) { of(handle); }
+  static void wake_int(GLFWwindow* handle, int) { of(handle); }
+  static void wake_size(GLFWwindow* handle, int, int) { of(handle); }
+  static void wake_char(GLFWwindow* handle, unsigned int) { of(handle); }
   static InputEvent event(Window& window, InputEvent::Kind kind) {
     InputEvent e;
     e.kind = kind;
@@ -45,8 +54,10 @@ struct WindowCallbacks {
     window.events_.push_back(e);
   }
   static void key(GLFWwindow* handle, int key, int, int action, int mods) {
-    if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
     Window& window = of(handle);
+    if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+    const bool modifier = key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY_MENU;
+    if (action == GLFW_PRESS && !modifier) ++window.keys_received_;
     modifiers(window, mods);
     InputEvent e = event(window, InputEvent::Kind::Key);
     if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z)
@@ -100,6 +111,13 @@ Window::Window(int width, int height, const char* title) {
   glfwSetScrollCallback(window_, WindowCallbacks::scroll);
   glfwSetKeyCallback(window_, WindowCallbacks::key);
   glfwSetDropCallback(window_, WindowCallbacks::drop);
+  glfwSetCharCallback(window_, WindowCallbacks::wake_char);
+  glfwSetWindowFocusCallback(window_, WindowCallbacks::wake_int);
+  glfwSetCursorEnterCallback(window_, WindowCallbacks::wake_int);
+  glfwSetWindowRefreshCallback(window_, WindowCallbacks::wake);
+  glfwSetWindowSizeCallback(window_, WindowCallbacks::wake_size);
+  glfwSetFramebufferSizeCallback(window_, WindowCallbacks::wake_size);
+  glfwSetWindowCloseCallback(window_, WindowCallbacks::wake);
 }
 
 Window::~Window() {
@@ -111,6 +129,15 @@ bool Window::should_close() const { return glfwWindowShouldClose(window_); }
 void Window::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 void Window::cancel_close() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
 void Window::set_title(const char* title) { glfwSetWindowTitle(window_, title); }
+
+bool Window::wait(std::optional<double> seconds) {
+  woken_ = false;
+  if (seconds)
+    glfwWaitEventsTimeout(*seconds);
+  else
+    glfwWaitEvents();
+  return woken_;
+}
 
 std::vector<InputEvent> Window::poll() {
   glfwPollEvents();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <optional>
 #include <vector>
 
 #include "events.h"
@@ -25,8 +26,14 @@ class Window {
   // Takes back a close request (the user still has something to answer).
   void cancel_close();
   void set_title(const char* title);
+  // Sleeps until the window system has an event for the window (input, a resize, an expose, a
+  // close request) or `seconds` pass (nothing: no limit). True when an event came.
+  bool wait(std::optional<double> seconds);
   // Processes pending input and returns what happened since the last call.
   std::vector<InputEvent> poll();
+  // Key presses received since the window opened (every key but Shift, Ctrl, Alt and Super, also
+  // those no shortcut takes): the state report gives it, so a test knows its keys arrived.
+  long keys_received() const { return keys_received_; }
   void swap();
   glm::ivec2 size() const;              // window pixels (cursor coordinates)
   glm::ivec2 framebuffer_size() const;  // GL pixels
@@ -39,6 +46,8 @@ class Window {
   glm::vec2 cursor_{0.0f};
   bool shift_ = false;
   bool control_ = false;
+  bool woken_ = false;  // an event came since the last wait()
+  long keys_received_ = 0;
   friend struct WindowCallbacks;
 };
 

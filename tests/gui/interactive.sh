@@ -12,41 +12,65 @@ export LIBGL_ALWAYS_SOFTWARE=1
 
 fail() { echo "FAILED: $*" >&2; [ -n "${pid:-}" ] && kill "$pid" 2>/dev/null; exit 1; }
 
-# Starts the viewer with the given arguments and waits for its window.
-start() {
-  "$viewer" "$@" >"$work/viewer.log" 2>&1 &
-  pid=$!
-  window=$(timeout 60 xdotool search --sync --onlyvisible --name 'holefill viewer' | head -1)
-  [ -n "$window" ] || fail "no viewer window appeared: $(cat "$work/viewer.log")"
-  xdotool windowfocus --sync "$window"
-  sleep 1  # the first frames lay the panel out
-}
-keys() { xdotool key --delay 100 "$@"; sleep 0.7; }
-alive() { kill -0 "$pid" 2>/dev/null; }
-# Waits up to $1 seconds for the viewer to exit and checks its status is $2.
-exits_within() {
-  for _ in $(seq $(($1 * 10))); do alive || break; sleep 0.1; done
-  alive && fail "the viewer is still running after $1 s"
-  wait "$pid"
-  local status=$?
-  [ "$status" = "$2" ] || fail "the viewer exited with $status, expected $2"
-}
-# Saves a screenshot (F12) as $1.png in the work folder, for people to look at.
-# Waits up to 20 s: a frame takes long under llvmpipe on a loaded machine.
-screenshot() {
-  keys F12
-  for _ in $(seq 200); do [ -f holefill-screenshot.png ] && break; sleep 0.1; done
-  mv holefill-screenshot.png "$1.png" || fail "F12 saved no screenshot"
-}
-title() { xdotool getwindowname "$window"; }
-# Polls a command for up to $1 seconds: under a loaded CI machine a frame (and so a save or a
-# title change) can take far longer than the fixed pause after a key.
+# The viewer keeps its state in $work/state (--state-file): frames, keys received, idle, busy,
+# question, title, message. Every step below waits on that state, never on a fixed pause, so a
+# loaded machine only makes the test slower.
+field() { sed -n "s/^$1 //p" "$work/state" 2>/dev/null; }
+# Polls a command for up to $1 seconds.
 eventually() {
   local seconds=$1
   shift
   for _ in $(seq $((seconds * 10))); do "$@" && return 0; sleep 0.1; done
   return 1
 }
+is_idle() { [ "$(field idle)" = 1 ]; }
+# Waits until the viewer has nothing left to do or draw (it sleeps until an event).
+settled() { eventually 60 is_idle || fail "the viewer did not settle: $(cat "$work/state")"; }
+
+# Starts the viewer with the given arguments, waits for its window and its first frames.
+start() {
+  rm -f "$work/state"
+  "$viewer" "$@" --state-file "$work/state" >"$work/viewer.log" 2>&1 &
+  pid=$!
+  window=$(timeout 60 xdotool search --sync --onlyvisible --name 'holefill viewer' | head -1)
+  [ -n "$window" ] || fail "no viewer window appeared: $(cat "$work/viewer.log")"
+  xdotool windowfocus --sync "$window"
+  settled
+}
+received_at_least() { [ "$(field keys)" -ge "$1" ] 2>/dev/null; }
+# Sends keys (each argument one press, as xdotool names it) and waits until the viewer has
+# received them all.
+press() {
+  local want=$(($(field keys) + $#))
+  xdotool key --delay 50 "$@"
+  eventually 60 received_at_least "$want" ||
+    fail "the viewer did not receive $*: $(cat "$work/state")"
+}
+# Sends keys and waits until the viewer has done what they asked (and drawn it).
+keys() { press "$@"; settled; }
+alive() { kill -0 "$pid" 2>/dev/null; }
+gone() { ! alive; }
+# Waits up to $1 seconds for the viewer to exit and checks its status is $2.
+exits_within() {
+  eventually "$1" gone || fail "the viewer is still running after $1 s"
+  wait "$pid"
+  local status=$?
+  [ "$status" = "$2" ] || fail "the viewer exited with $status, expected $2"
+}
+asks() { [ "$(field question)" = "$1" ]; }
+# A close request as a window manager sends it; the viewer must ask (save-changes) or exit.
+close_and_expect_question() {
+  "$close_request" "$window"
+  eventually 60 asks save-changes || fail "a close request with unsaved fills got no question"
+  settled
+}
+# Saves a screenshot (F12) as $1.png in the work folder, for people to look at.
+screenshot() {
+  press F12
+  eventually 60 test -f holefill-screenshot.png || fail "F12 saved no screenshot"
+  mv holefill-screenshot.png "$1.png" || fail "F12 saved no screenshot"
+}
+title() { xdotool getwindowname "$window"; }
 title_is() { [ "$(title)" = "$1" ]; }
 faces() { grep -c '^f ' "$1"; }
 # How many edges of an OBJ's triangles have a single face: 0 for a closed surface.
@@ -67,15 +91,14 @@ close-saved)
 close-unsaved)
   start bunny.obj --select-hole 0 --run triangulate
   eventually 20 title_is "*bunny.obj - holefill viewer" || fail "title '$(title)' has no modified mark"
-  "$close_request" "$window"
-  sleep 1.5
+  close_and_expect_question
   alive || fail "a close request with unsaved fills quit the viewer"
   screenshot save-changes-question
   keys Escape  # Cancel
-  "$close_request" "$window"
-  sleep 1.5
+  asks none || fail "Esc left the question up"
+  close_and_expect_question
   alive || fail "the viewer quit after Cancel and a second request"
-  keys d  # Discard
+  press d  # Discard
   exits_within 20 0
   ;;
 save-as)
@@ -156,10 +179,10 @@ fill-all)
   export HOLEFILL_FILE_DIALOG=builtin
   start bunny.obj
   keys ctrl+f
-  for _ in $(seq 100); do [ "$(title)" = "*bunny.obj - holefill viewer" ] && break; sleep 0.1; done
-  [ "$(title)" = "*bunny.obj - holefill viewer" ] || fail "Fill all changed nothing: '$(title)'"
+  title_is "*bunny.obj - holefill viewer" || fail "Fill all changed nothing: '$(title)'"
   screenshot fill-all-done
   keys ctrl+s Return
+  eventually 20 test -f bunny-filled.obj || fail "Save wrote nothing: $(cat viewer.log)"
   [ "$(faces bunny-filled.obj)" -gt "$(faces bunny.obj)" ] || fail "the saved mesh is not filled"
   "$close_request" "$window"
   exits_within 20 0
@@ -178,12 +201,14 @@ fill-all-cancel)
     }
   }' > holes.obj
   start holes.obj
-  for _ in $(seq 100); do [ "$(title)" = "holes.obj - holefill viewer" ] && break; sleep 0.1; done
-  keys ctrl+f
+  eventually 60 title_is "holes.obj - holefill viewer" || fail "holes.obj did not open"
+  press ctrl+f
   screenshot fill-all-progress  # the window draws (and takes screenshots) while it works
+  [ "$(field busy)" = 1 ] || fail "Fill all ended before Esc: $(cat state)"
   keys Escape
-  sleep 1
-  [ "$(title)" = "holes.obj - holefill viewer" ] || fail "Cancel left a change: '$(title)'"
+  [ "$(field notice)" = "Filling 9 holes: cancelled, mesh unchanged" ] ||
+    fail "Cancel said '$(field notice)'"
+  title_is "holes.obj - holefill viewer" || fail "Cancel left a change: '$(title)'"
   "$close_request" "$window"  # nothing unsaved: quits at once
   exits_within 10 0
   ;;
