@@ -8,6 +8,8 @@ namespace holefill::viewer {
 
 namespace {
 
+constexpr const char* kOpening = "Opening ";
+
 // Computes `request` (a FillRequest or a LogChange) on the worker and applies it when done.
 template <class Request>
 bool start_compute(Worker& worker, Session& session, std::string label, const Request& request) {
@@ -52,7 +54,7 @@ bool start_options(Worker& worker, Session& session, const FillOptions& options)
 
 bool start_open(Worker& worker, Session& session, FileActions& files,
                 const std::filesystem::path& path) {
-  return worker.start("Opening " + path.filename().string(), [&session, &files, path](Progress&) {
+  return worker.start(kOpening + path.filename().string(), [&session, &files, path](Progress&) {
     auto opened = std::make_shared<Session>();
     const bool read = opened->open(path);
     return [&session, &files, opened, read, path] {
@@ -64,6 +66,10 @@ bool start_open(Worker& worker, Session& session, FileActions& files,
       files.opened(path);
     };
   });
+}
+
+bool opening(const Worker& worker) {
+  return worker.busy() && worker.label().rfind(kOpening, 0) == 0;
 }
 
 }  // namespace holefill::viewer

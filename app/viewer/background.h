@@ -32,5 +32,7 @@ bool start_comparison(Worker& worker, Session& session);
 // (opened), or, when the file cannot be read, leaves the session and shows why (notice).
 bool start_open(Worker& worker, Session& session, FileActions& files,
                 const std::filesystem::path& path);
+// Whether the worker is opening a mesh (start_open).
+bool opening(const Worker& worker);
 
 }  // namespace holefill::viewer

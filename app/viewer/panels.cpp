@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "background.h"
+#include "disabled_reasons.h"
 #include "hole_list_panel.h"
 #include "palette.h"
+#include "status_bar.h"
 #include "valence_bins.h"
 #include "widgets.h"
 
@@ -20,7 +22,6 @@ namespace holefill::viewer {
 namespace {
 
 constexpr float kSqrt2 = 1.41421356f;
-constexpr double kNoticeSeconds = 12.0;
 
 // A bar per valence bin (valence_bins: the same bins for every chart) with its label under it
 // and the count on hover; `log`: heights on a log scale.
@@ -56,8 +57,11 @@ void histogram(const char* id, const std::map<int, std::size_t>& valences, float
           ImGui::GetColorU32(over ? ImGuiCol_PlotHistogramHovered : ImGuiCol_PlotHistogram));
     }
     const float label_width = ImGui::CalcTextSize(bins[i].label).x;
-    draw->AddText(ImVec2(left + 0.5f * (slot - label_width), base),
-                  ImGui::GetColorU32(ImGuiCol_TextDisabled), bins[i].label);
+    // In a narrow chart (the comparison's halves) every other label, so they never touch.
+    const bool crowded = label_width + scaled(4.0f) > slot;
+    if (!crowded || i % 2 == 0)
+      draw->AddText(ImVec2(left + 0.5f * (slot - label_width), base),
+                    ImGui::GetColorU32(ImGuiCol_TextDisabled), bins[i].label);
     if (over) {
       ImGui::SetTooltip("valence %s: %zu vertices (%.1f %%)", bins[i].label, bins[i].count,
                         100.0 * static_cast<double>(bins[i].count) / static_cast<double>(total));
@@ -75,9 +79,9 @@ void histogram(const char* id, const std::map<int, std::size_t>& valences, float
 // measures and the valences of its new vertices.
 void patch_statistics(int hole_id, const HoleFill& fill, bool log_valences) {
   if (fill.failed()) {
-    ImGui::Text("Hole %d:", hole_id);
-    ImGui::SameLine();
-    ImGui::TextColored(kErrorColor, "failed: %s", fill.failure.c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+    ImGui::TextWrapped("Hole %d failed: %s", hole_id, fill.failure.c_str());
+    ImGui::PopStyleColor();
     return;
   }
   if (fill.stage() == Stage::Original) {
@@ -102,7 +106,7 @@ void patch_statistics(int hole_id, const HoleFill& fill, bool log_valences) {
   histogram("##patch_valences", s.valence_histogram, scaled(30.0f), log_valences);
 }
 
-void file_section(Session& session, FileActions& files, UiState& ui) {
+void file_section(FileActions& files, UiState& ui) {
   if (ImGui::Button("Open...")) files.open();
   tooltip("Open a mesh (Ctrl+O); or drop a file on the window");
   ImGui::SameLine();
@@ -117,22 +121,6 @@ void file_section(Session& session, FileActions& files, UiState& ui) {
   tooltip("Save the filled mesh as OBJ, OFF, PLY or STL (Ctrl+Shift+S)");
   ImGui::SameLine();
   if (ImGui::Button("Keys (F1)")) ui.show_help = true;
-  const Notice& notice = session.notice();
-  // A message that is not an error goes after a while; an error stays until dismissed.
-  if (notice.text != ui.shown_notice) {
-    ui.shown_notice = notice.text;
-    ui.notice_since = ImGui::GetTime();
-  } else if (!notice.error && ImGui::GetTime() - ui.notice_since > kNoticeSeconds) {
-    session.clear_notice();
-  }
-  if (!notice.text.empty()) {
-    if (ImGui::SmallButton("x")) session.clear_notice();
-    tooltip("Dismiss the message");
-    ImGui::SameLine();
-    if (notice.error) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
-    ImGui::TextWrapped("%s", notice.text.c_str());
-    if (notice.error) ImGui::PopStyleColor();
-  }
 }
 
 // What a slider did this frame: moved (show the value) and let go (apply it).
@@ -188,16 +176,18 @@ void options_section(Session& session, Worker& worker, UiState& ui) {
     }
     ImGui::EndCombo();
   }
+  tooltip(
+      "How the first stage triangulates the hole: maxmin (the paper's) maximises the smallest "
+      "angle, then minimises the largest dihedral angle; liepa minimises the dihedral angle, "
+      "then the area; area minimises the area");
   float tau = static_cast<float>(options.refine.tau);
   changed |= tau_slider(tau, slider);
   if (changed || slider.moved)
     options.refine.tau = std::abs(tau - kSqrt2) < 1e-6f ? std::sqrt(2.0) : tau;
   changed |= ImGui::Checkbox("remesh to valence 6", &options.refine.remesh);
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip(
-        "After refinement: valence-driven flips and tangential relaxation of the "
-        "patch (not in the paper)");
-  }
+  tooltip(
+      "After refinement: valence-driven flips and tangential relaxation of the patch (not in "
+      "the paper)");
   // 0: umbrella; 1, 2: fairing of order 2 (bi-Laplacian) or 3 (tri-Laplacian).
   const bool fair = options.smooth.method == SmoothMethod::Fair;
   int method = fair ? options.smooth.fair.order - 1 : 0;
@@ -207,11 +197,9 @@ void options_section(Session& session, Worker& worker, UiState& ui) {
     if (method > 0) options.smooth.fair.order = method + 1;
     changed = true;
   }
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip(
-        "umbrella: the paper's Laplacian smoothing; fair: bi- (order 2) or tri-Laplacian "
-        "(order 3) fairing that continues the surrounding curvature");
-  }
+  tooltip(
+      "umbrella: the paper's Laplacian smoothing; fair: bi- (order 2) or tri-Laplacian (order 3) "
+      "fairing that continues the surrounding curvature");
   ImGui::BeginDisabled(fair);  // the umbrella operator's own settings
   ImGui::SetNextItemWidth(scaled(150.0f));
   slider.after_item(ImGui::SliderInt("smoothing iterations", &options.smooth.iterations, 0, 100));
@@ -231,40 +219,46 @@ void options_section(Session& session, Worker& worker, UiState& ui) {
   }
 }
 
+// A button that is greyed out, with a tooltip that says why, unless `why_not` is empty (then
+// `what` explains it). While the worker runs every one of them says so.
+bool action_button(const char* label, const Worker& worker, const std::string& why_not,
+                   const char* what) {
+  const std::string reason = worker.busy() ? kBusyReason : why_not;
+  ImGui::BeginDisabled(!reason.empty());
+  const bool pressed = ImGui::Button(label);
+  ImGui::EndDisabled();
+  tooltip(what, reason);
+  return pressed;
+}
+
 void step_section(Session& session, Worker& worker, UiState& ui) {
-  const auto stage_button = [&](const char* label, Stage stage) {
-    ImGui::BeginDisabled(!session.can_step(stage));
-    if (ImGui::Button(label)) start_fill(worker, session, session.step_request(stage));
-    ImGui::EndDisabled();
+  const auto stage_button = [&](const char* label, Stage stage, const char* what) {
+    if (action_button(label, worker, why_not_step(session, stage), what))
+      start_fill(worker, session, session.step_request(stage));
   };
-  stage_button("Triangulate", Stage::Triangulated);
+  stage_button("Triangulate", Stage::Triangulated,
+               "Close the selected hole with a minimal-weight triangulation (the first stage)");
   ImGui::SameLine();
-  stage_button("Refine", Stage::Refined);
+  stage_button("Refine", Stage::Refined,
+               "Split and swap the patch's triangles to the density of the mesh around it");
   ImGui::SameLine();
-  stage_button("Smooth", Stage::Smoothed);
+  stage_button("Smooth", Stage::Smoothed, "Smooth the patch's new vertices");
   ImGui::SameLine();
-  ImGui::BeginDisabled(!session.next_stage());
-  if (ImGui::Button("Fill")) start_fill(worker, session, session.fill_selected_request());
-  ImGui::EndDisabled();
-  tooltip("The selected hole's remaining stages (Shift+F)");
+  if (action_button("Fill", worker, why_not_fill_selected(session),
+                    "The selected hole's remaining stages (Shift+F)"))
+    start_fill(worker, session, session.fill_selected_request());
   ImGui::SameLine();
-  const bool untouched =
-      session.selected() < 0 || (session.fill(session.selected()).stage() == Stage::Original &&
-                                 !session.fill(session.selected()).failed());
-  ImGui::BeginDisabled(untouched);
-  if (ImGui::Button("Reset hole")) start_change(worker, session, session.reset_request());
-  tooltip("Take the selected hole's patch out again (Delete)");
-  ImGui::EndDisabled();
+  if (action_button("Reset hole", worker, why_not_reset(session),
+                    "Take the selected hole's patch out again (Delete)"))
+    start_change(worker, session, session.reset_request());
 
   const auto limit = static_cast<std::size_t>(ui.fill_all_max_edges);
-  ImGui::BeginDisabled(!session.fill_all_request(limit));
-  if (ImGui::Button(limit ? "Fill holes up to" : "Fill all holes"))
+  if (action_button(limit ? "Fill holes up to" : "Fill all holes", worker,
+                    why_not_fill_all(session, limit),
+                    "Every open hole's remaining stages (with its islands; borders of open "
+                    "surfaces are left for you to fill one by one), on a worker: Cancel leaves "
+                    "the mesh as it was (Ctrl+F)"))
     start_fill(worker, session, session.fill_all_request(limit));
-  ImGui::EndDisabled();
-  tooltip(
-      "Every open hole's remaining stages (with its islands; borders of open surfaces are left "
-      "for you to fill one by one), on a worker: Cancel leaves the mesh as it was "
-      "(Ctrl+F)");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(scaled(90.0f));
   if (ImGui::InputInt("edges##limit", &ui.fill_all_max_edges, 10, 100))
@@ -273,15 +267,11 @@ void step_section(Session& session, Worker& worker, UiState& ui) {
       "Fill only holes of at most this many boundary edges (0: every hole), like the "
       "command line's --max-boundary");
   ImGui::SameLine();
-  ImGui::BeginDisabled(!session.can_undo());
-  if (ImGui::Button("Undo")) start_change(worker, session, session.undo_request());
-  tooltip("Ctrl+Z");
-  ImGui::EndDisabled();
+  if (action_button("Undo", worker, why_not_undo(session), "Ctrl+Z"))
+    start_change(worker, session, session.undo_request());
   ImGui::SameLine();
-  ImGui::BeginDisabled(!session.can_redo());
-  if (ImGui::Button("Redo")) start_change(worker, session, session.redo_request());
-  tooltip("Ctrl+Y or Ctrl+Shift+Z");
-  ImGui::EndDisabled();
+  if (action_button("Redo", worker, why_not_redo(session), "Ctrl+Y or Ctrl+Shift+Z"))
+    start_change(worker, session, session.redo_request());
 }
 
 void statistics_section(Session& session, UiState& ui) {
@@ -304,18 +294,25 @@ void statistics_section(Session& session, UiState& ui) {
 void comparison_section(Session& session, Worker& worker, const UiState& ui) {
   bool compare = session.compare();
   if (ImGui::Checkbox("Compare", &compare)) session.set_compare(compare);
+  tooltip(
+      "Fill the selected hole two ways side by side, with one camera: the weights (liepa | "
+      "maxmin) or the smoothing (umbrella | fair); the mesh is not changed until Keep this");
   ImGui::SameLine();
   int mode = session.compare_mode() == CompareMode::Weights ? 0 : 1;
-  ImGui::SetNextItemWidth(scaled(125.0f));
+  // As wide as its longest entry and the arrow, so that no entry is cut.
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize("umbrella | fair").x + ImGui::GetFrameHeight() +
+                          2.0f * ImGui::GetStyle().FramePadding.x);
   if (ImGui::Combo("##compare_mode", &mode, "liepa | maxmin\0umbrella | fair\0")) {
     session.set_compare_mode(mode == 0 ? CompareMode::Weights : CompareMode::Smoothing);
   }
+  tooltip("What the two sides differ in");
   if (session.compare_mode() == CompareMode::Weights) {
     ImGui::SameLine();
     bool triangulation_only = session.compare_triangulation_only();
     if (ImGui::Checkbox("triangulation only", &triangulation_only)) {
       session.set_compare_triangulation_only(triangulation_only);
     }
+    tooltip("Compare the first stage alone, where the weights differ most");
   }
   const Comparison* comparison = session.shown_comparison();
   if (!compare) return;
@@ -347,11 +344,10 @@ void comparison_section(Session& session, Worker& worker, const UiState& ui) {
   for (const ComparisonSide* side : sides) {
     ImGui::TableNextColumn();
     ImGui::PushID(side == &comparison->left ? "left" : "right");
-    ImGui::BeginDisabled(worker.busy() || side->fill.failed());
-    if (ImGui::Button("Keep this"))
+    if (action_button("Keep this", worker,
+                      side->fill.failed() ? "This side failed: there is nothing to keep" : "",
+                      "Fill the hole with this side's options (they become the current ones)"))
       start_change(worker, session, session.keep_request(side == &comparison->right));
-    ImGui::EndDisabled();
-    tooltip("Fill the hole with this side's options (they become the current ones)");
     ImGui::PopID();
   }
   ImGui::EndTable();
@@ -377,14 +373,37 @@ void legend() {
 void display_section(UiState& ui) {
   legend();
   ImGui::Checkbox("wireframe", &ui.display.wireframe);
+  tooltip(
+      "Draw the mesh's edges (off at first on meshes of over 200,000 faces, where they cover "
+      "the surface and cost most of the frame)");
   ImGui::SameLine();
   ImGui::Checkbox("flat shading", &ui.display.flat);
+  tooltip("One normal per face, so that every triangle shows");
   ImGui::SameLine();
   ImGui::Checkbox("new vertices", &ui.display.patch_vertices);
+  tooltip("Dots on the vertices the fills added (thinned out where they crowd)");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - scaled(100.0f));
   ImGui::InputText("##screenshot", &ui.screenshot_path);
+  tooltip(
+      "Where Screenshot and F12 save the window as PNG; a number is added rather than "
+      "replacing a file");
   ImGui::SameLine();
   if (ImGui::Button("Screenshot")) ui.take_screenshot = true;
+  tooltip("Save the window as PNG (F12)");
+}
+
+// The hole list, unless there is no mesh to show yet: then what is happening (opening, or how
+// to open one). False when the sections about the mesh are left out.
+bool mesh_sections(Session& session, const FileActions& files, Worker& worker, UiState& ui) {
+  if (opening(worker)) {
+    ImGui::Text("%s...", worker.label().c_str());
+    if (session.mesh().n_vertices() == 0) return false;
+  } else if (session.mesh().n_vertices() == 0) {
+    ImGui::TextWrapped("No mesh is open: Open... (Ctrl+O), or drop a file on the window.");
+    return false;
+  }
+  draw_hole_list(session, files, worker, ui);
+  return true;
 }
 
 }  // namespace
@@ -419,20 +438,25 @@ void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& 
   ImGui::SetNextWindowSize(ImVec2(ui.scale.panel_width(), window_height));
   ImGui::Begin("holefill", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  file_section(session, files, ui);
+  file_section(files, ui);
   ImGui::Separator();
-  draw_hole_list(session, worker, ui);
-  ImGui::Separator();
-  ImGui::BeginDisabled(worker.busy());
-  options_section(session, worker, ui);
-  step_section(session, worker, ui);
-  ImGui::EndDisabled();
-  ImGui::Separator();
-  statistics_section(session, ui);
-  ImGui::Separator();
-  comparison_section(session, worker, ui);
+  // Everything but the status bar scrolls in the room above it.
+  ImGui::BeginChild("##controls", ImVec2(0.0f, -status_bar_height()));
+  if (mesh_sections(session, files, worker, ui)) {
+    ImGui::Separator();
+    ImGui::BeginDisabled(worker.busy());
+    options_section(session, worker, ui);
+    step_section(session, worker, ui);
+    ImGui::EndDisabled();
+    ImGui::Separator();
+    statistics_section(session, ui);
+    ImGui::Separator();
+    comparison_section(session, worker, ui);
+  }
   ImGui::Separator();
   display_section(ui);
+  ImGui::EndChild();
+  draw_status_bar(session, ui.notices);
   ImGui::End();
 }
 

@@ -15,6 +15,24 @@ std::vector<FillStep> without_hole(std::vector<FillStep> log, int hole_id) {
   return log;
 }
 
+// What an undo, a redo or another log change did, for the status bar.
+std::string change_notice(LogChange::Kind kind, int selected) {
+  const std::string hole = "hole " + std::to_string(selected);
+  switch (kind) {
+    case LogChange::Kind::Undo:
+      return "Undone.";
+    case LogChange::Kind::Redo:
+      return "Redone.";
+    case LogChange::Kind::Reset:
+      return "Took the patch of " + hole + " out.";
+    case LogChange::Kind::Options:
+      return "Filled " + hole + " again with the new options.";
+    case LogChange::Kind::Keep:
+      return "Kept the compared result for " + hole + ".";
+  }
+  return {};
+}
+
 }  // namespace
 
 bool Session::open(const std::filesystem::path& path) {
@@ -313,6 +331,8 @@ void Session::apply(ChangeResult result) {
     joined_ = std::move(*change.joined);
     selection_changed();
   }
+  // What the last fill said ("Filled 68 of 106 holes") no longer holds.
+  notice_ = {change_notice(change.kind, selected_), false};
 }
 
 const std::map<int, std::size_t>& Session::mesh_valences() {
