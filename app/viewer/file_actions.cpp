@@ -16,6 +16,17 @@ bool writable(const std::string& extension) {
 
 }  // namespace
 
+std::filesystem::path unused_path(const std::filesystem::path& wanted) {
+  std::error_code error;
+  if (!std::filesystem::exists(wanted, error)) return wanted;
+  for (int n = 2;; ++n) {
+    auto candidate = wanted;
+    candidate.replace_filename(wanted.stem().string() + "-" + std::to_string(n) +
+                               wanted.extension().string());
+    if (!std::filesystem::exists(candidate, error)) return candidate;
+  }
+}
+
 bool FileActions::open_now(const std::filesystem::path& path) {
   if (!session_.open(path)) return false;
   opened(path);

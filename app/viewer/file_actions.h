@@ -17,6 +17,10 @@
 
 namespace holefill::viewer {
 
+// `wanted` when no file is there, else the first free "stem-2.ext", "stem-3.ext"... beside it:
+// where a screenshot goes without replacing an earlier one.
+std::filesystem::path unused_path(const std::filesystem::path& wanted);
+
 class FileActions {
  public:
   enum class Question { None, SaveChanges, Overwrite };

@@ -245,7 +245,7 @@ class FrameLoop {
   int run() {
     for (int frame = 0;; ++frame) {
       if (close_requested() || files_.quitting()) break;
-      if (const auto status = take_worker_result()) return *status;
+      take_worker_result();
       // The comparison is made on the worker too, whenever it is out of date and nothing runs.
       if (!scripted_) start_comparison(worker_, session_);
       carry_out_waiting();
@@ -281,10 +281,11 @@ class FrameLoop {
     return false;
   }
 
-  // Takes what the worker finished; an exit status when the command line's mesh cannot be read
-  // (the program ends, as it does without a window).
-  std::optional<int> take_worker_result() {
-    if (!worker_.poll()) return std::nullopt;
+  // Takes what the worker finished. A mesh that could not be opened leaves the window open with
+  // the reason in the status bar and Open at hand (from a desktop launcher there is no terminal
+  // to read); the reason goes to stderr too.
+  void take_worker_result() {
+    if (!worker_.poll()) return;
     pacer_.wake();
     if (!worker_.error().empty()) session_.tell({worker_.error(), true});
     if (worker_.cancelled()) {
@@ -293,9 +294,8 @@ class FrameLoop {
       session_.tell({worker_.label() + ": cancelled, mesh unchanged", false});
       waiting_.clear();
     }
-    if (!files_.opened_path().empty()) return std::nullopt;
-    std::fprintf(stderr, "holefill-viewer: %s\n", session_.notice().text.c_str());
-    return 3;
+    if (files_.opened_path().empty() && session_.notice().error)
+      std::fprintf(stderr, "holefill-viewer: %s\n", session_.notice().text.c_str());
   }
 
   FrameKeys handle_input(const SceneArea& area) {
@@ -404,8 +404,10 @@ class FrameLoop {
     if (!ui_.take_screenshot) return;
     ui_.take_screenshot = false;
     try {
-      save_screenshot(renderer_, window_, ui_.screenshot_path);
-      const auto where = std::filesystem::absolute(ui_.screenshot_path).string();
+      // Numbered rather than replacing an earlier one.
+      const auto path = unused_path(ui_.screenshot_path);
+      save_screenshot(renderer_, window_, path);
+      const auto where = std::filesystem::absolute(path).string();
       std::printf("saved %s\n", where.c_str());
       session_.tell({"Screenshot saved to " + where, false});
     } catch (const std::exception& error) {

@@ -16,9 +16,9 @@
 namespace holefill::viewer {
 
 // Opens Dear ImGui on `window` and runs frames until the user quits (or a scripted run is done).
-// When `read_first` is false the mesh at `mesh_path` is read on the worker while the window shows.
-// Returns the program's exit status: 0, 3 when the command line's mesh cannot be read, 4 when the
-// scripted screenshot cannot be written.
+// When `read_first` is false the mesh at `mesh_path` is read on the worker while the window shows
+// (when it cannot be read, the window says why and offers Open). Returns the program's exit
+// status: 0, or 4 when the scripted screenshot cannot be written.
 int run_frames(const CommandLine& command, Window& window, Session& session, FileActions& files,
                Worker& worker, const std::filesystem::path& mesh_path, bool read_first,
                std::chrono::steady_clock::time_point started);

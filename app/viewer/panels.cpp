@@ -106,19 +106,23 @@ void patch_statistics(int hole_id, const HoleFill& fill, bool log_valences) {
   histogram("##patch_valences", s.valence_histogram, scaled(30.0f), log_valences);
 }
 
-void file_section(FileActions& files, UiState& ui) {
+void file_section(const Session& session, FileActions& files, UiState& ui) {
   if (ImGui::Button("Open...")) files.open();
   tooltip("Open a mesh (Ctrl+O); or drop a file on the window");
   ImGui::SameLine();
+  const bool no_mesh = session.mesh().n_vertices() == 0;
+  ImGui::BeginDisabled(no_mesh);
   if (ImGui::Button("Save")) files.save();
   const std::string save_tip =
       files.save_target()
           ? "Save to " + files.save_target()->string() + " (Ctrl+S)"
           : std::string("Save the filled mesh: asks where, the first time (Ctrl+S)");
-  tooltip(save_tip.c_str());
+  tooltip(save_tip.c_str(), no_mesh ? "No mesh is open" : "");
   ImGui::SameLine();
   if (ImGui::Button("Save As...")) files.save_as();
-  tooltip("Save the filled mesh as OBJ, OFF, PLY or STL (Ctrl+Shift+S)");
+  tooltip("Save the filled mesh as OBJ, OFF, PLY or STL (Ctrl+Shift+S)",
+          no_mesh ? "No mesh is open" : "");
+  ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::Button("Keys (F1)")) ui.show_help = true;
 }
@@ -438,7 +442,7 @@ void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& 
   ImGui::SetNextWindowSize(ImVec2(ui.scale.panel_width(), window_height));
   ImGui::Begin("holefill", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  file_section(files, ui);
+  file_section(session, files, ui);
   ImGui::Separator();
   // Everything but the status bar scrolls in the room above it.
   ImGui::BeginChild("##controls", ImVec2(0.0f, -status_bar_height()));

@@ -2,7 +2,11 @@
 // buttons give, and the messages that replace a stale one (issue 31).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "disabled_reasons.h"
+#include "file_actions.h"
 #include "notice_log.h"
 #include "test_sessions.h"
 
@@ -62,6 +66,26 @@ TEST(SessionNotice, UndoAndRedoReplaceTheFillsMessage) {
   session.select(0);
   ASSERT_TRUE(session.reset_selected());
   EXPECT_EQ(session.notice().text, "Took the patch of hole 0 out.");
+}
+
+}  // namespace
+}  // namespace holefill::viewer
+
+namespace holefill::viewer {
+namespace {
+
+// F12 numbers its screenshots instead of replacing the last one.
+TEST(UnusedPath, NumbersAFileThatExistsAlready) {
+  const auto folder = std::filesystem::temp_directory_path() / "holefill-unused-path-test";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const auto shot = folder / "shot.png";
+  EXPECT_EQ(unused_path(shot), shot);
+  std::ofstream(shot) << "1";
+  EXPECT_EQ(unused_path(shot), folder / "shot-2.png");
+  std::ofstream(folder / "shot-2.png") << "2";
+  EXPECT_EQ(unused_path(shot), folder / "shot-3.png");
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace
