@@ -170,7 +170,8 @@ void draw_progress(Worker& worker, const FrameKeys& keys, float left, float righ
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
   const bool cancelling = worker.cancelling();
-  ImGui::Text("%s%s  %.1f s", worker.label().c_str(), cancelling ? ": cancelling" : "...",
+  ImGui::Text("%s%s  %.1f s", worker.label().c_str(),
+              cancelling ? ": cancelled, stopping (the mesh stays as it was)" : "...",
               worker.seconds());
   ImGui::ProgressBar(static_cast<float>(worker.fraction()), ImVec2(-1.0f, 0.0f));
   ImGui::BeginDisabled(cancelling);

@@ -244,6 +244,7 @@ class FrameLoop {
 
   int run() {
     for (int frame = 0;; ++frame) {
+      const auto frame_start = std::chrono::steady_clock::now();
       if (close_requested() || files_.quitting()) break;
       take_worker_result();
       // The comparison is made on the worker too, whenever it is out of date and nothing runs.
@@ -263,7 +264,8 @@ class FrameLoop {
       // ImGui lays windows out over its first frames; a few frames settle the picture.
       if (scripted_ && frame >= command_.frames - 1) finish_script(frame);
       window_.swap();
-      pacer_.frame_drawn();
+      pacer_.frame_drawn(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_start).count());
       report_state(frame + 1, false);
       wait_for_events(frame + 1);
     }
@@ -288,12 +290,9 @@ class FrameLoop {
     if (!worker_.poll()) return;
     pacer_.wake();
     if (!worker_.error().empty()) session_.tell({worker_.error(), true});
-    if (worker_.cancelled()) {
-      // A comparison cancelled (Esc) turns the comparison off rather than starting it again.
-      if (session_.comparison_request()) session_.set_compare(false);
-      session_.tell({worker_.label() + ": cancelled, mesh unchanged", false});
-      waiting_.clear();
-    }
+    // A comparison cancelled (Esc) turns the comparison off rather than starting it again.
+    if (worker_.cancelled() && session_.comparison_request()) session_.set_compare(false);
+    cancel_told_ = false;
     if (files_.opened_path().empty() && session_.notice().error)
       std::fprintf(stderr, "holefill-viewer: %s\n", session_.notice().text.c_str());
   }
@@ -335,6 +334,13 @@ class FrameLoop {
     draw_file_modals(files_, builtin_dialog_, dialogs_.builtin(), keys);
     draw_help(ui_.show_help, keys);
     ImGui::Render();
+    // Esc stops the work at its next check; its result is dropped, so the mesh is unchanged
+    // from this moment on: say so now, and drop what waited for it.
+    if (worker_.cancelling() && !cancel_told_) {
+      cancel_told_ = true;
+      session_.tell({worker_.label() + ": cancelled, mesh unchanged", false});
+      waiting_.clear();
+    }
     if (files_.take_mesh_opened()) mesh_opened(camera_, session_, ui_);
     if (files_.window_title() != title_) {
       title_ = files_.window_title();
@@ -445,6 +451,7 @@ class FrameLoop {
   FramePacer pacer_;
   StateReport state_;
   RequestQueue waiting_;
+  bool cancel_told_ = false;  // the running job's cancel was announced
   int status_ = 0;
 };
 

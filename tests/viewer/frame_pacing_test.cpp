@@ -34,6 +34,10 @@ TEST(FramePacer, KeepsDrawingWhileWorkRuns) {
   for (int i = 0; i < FramePacer::kSettleFrames; ++i) pacer.frame_drawn();
   EXPECT_EQ(pacer.wait_before_frame(true), FramePacer::kBusySeconds);
   EXPECT_FALSE(pacer.idle(true));
+  // A slow frame (a big mesh): the loop waits as long again, leaving the work half the time.
+  pacer.frame_drawn(0.4);
+  EXPECT_EQ(pacer.wait_before_frame(true), 0.4);
+  EXPECT_FALSE(pacer.wait_before_frame(false).has_value());
 }
 
 std::string read(const std::filesystem::path& path) {
