@@ -52,7 +52,18 @@ void FileActions::open() { ask_or_do(Action::OpenDialog); }
 void FileActions::open_file(const std::filesystem::path& path) {
   ask_or_do(Action::OpenFile, path);
 }
-void FileActions::quit() { ask_or_do(Action::Quit); }
+void FileActions::quit() {
+  // Never ignored: a file dialog or the overwrite question is dismissed; the Save changes
+  // question, when it shows, now answers for closing.
+  dialog_.reset();
+  if (question_ == Question::Overwrite) question_ = Question::None;
+  if (question_ == Question::SaveChanges) {
+    pending_ = Action::Quit;
+    return;
+  }
+  pending_ = Action::None;
+  ask_or_do(Action::Quit);
+}
 
 void FileActions::save() {
   if (busy()) return;

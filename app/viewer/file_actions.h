@@ -44,7 +44,9 @@ class FileActions {
   void open_file(const std::filesystem::path& path);  // a dropped file
   void save();                                        // to the last Save As target, else Save As
   void save_as();                                     // the Save dialog
-  void quit();                                        // closing the window
+  // Closing the window: never ignored, also while a dialog or a question shows (it is dismissed;
+  // the Save changes question then answers for closing).
+  void quit();
 
   // The file dialog to show, if any; the frame loop shows it and reports with dialog_closed.
   const std::optional<FileDialogRequest>& dialog() const { return dialog_; }

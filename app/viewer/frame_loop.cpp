@@ -378,6 +378,7 @@ class FrameLoop {
     ViewerState state;
     state.frames = frames;
     state.keys = window_.keys_received();
+    state.closes = window_.close_requests();
     state.idle = idle;
     state.busy = worker_.busy();
     state.waiting = static_cast<int>(waiting_.size());

@@ -17,10 +17,10 @@ std::string without_frames(const ViewerState& state) {
 std::string format_state(const ViewerState& state) {
   const std::string notice = state.notice.substr(0, state.notice.find('\n'));
   return "frames " + std::to_string(state.frames) + "\nkeys " + std::to_string(state.keys) +
-         "\nidle " + (state.idle ? "1" : "0") + "\nbusy " + (state.busy ? "1" : "0") +
-         "\nwaiting " + std::to_string(state.waiting) + "\nquestion " + state.question +
-         "\ndialog " + (state.dialog ? "1" : "0") + "\ntitle " + state.title + "\nnotice " +
-         notice + "\n";
+         "\ncloses " + std::to_string(state.closes) + "\nidle " + (state.idle ? "1" : "0") +
+         "\nbusy " + (state.busy ? "1" : "0") + "\nwaiting " + std::to_string(state.waiting) +
+         "\nquestion " + state.question + "\ndialog " + (state.dialog ? "1" : "0") + "\ntitle " +
+         state.title + "\nnotice " + notice + "\n";
 }
 
 void StateReport::update(const ViewerState& state) {

@@ -11,6 +11,7 @@ namespace holefill::viewer {
 struct ViewerState {
   long frames = 0;  // frames drawn
   long keys = 0;    // key presses received (Window::keys_received)
+  long closes = 0;  // close requests received (Window::close_requests)
   // Nothing to draw and nothing running or waiting: the loop sleeps until an event.
   bool idle = false;
   bool busy = false;     // the worker runs

@@ -17,6 +17,7 @@ struct WindowCallbacks {
   // Events that only ask for a new frame (Dear ImGui's own callbacks, chained after these,
   // read what they carry).
   static void wake(GLFWwindow* handle) { of(handle); }
+  static void close(GLFWwindow* handle) { ++of(handle).close_requests_; }
   static void wake_int(GLFWwindow* handle, int) { of(handle); }
   static void wake_size(GLFWwindow* handle, int, int) { of(handle); }
   static void wake_char(GLFWwindow* handle, unsigned int) { of(handle); }
@@ -117,7 +118,7 @@ Window::Window(int width, int height, const char* title) {
   glfwSetWindowRefreshCallback(window_, WindowCallbacks::wake);
   glfwSetWindowSizeCallback(window_, WindowCallbacks::wake_size);
   glfwSetFramebufferSizeCallback(window_, WindowCallbacks::wake_size);
-  glfwSetWindowCloseCallback(window_, WindowCallbacks::wake);
+  glfwSetWindowCloseCallback(window_, WindowCallbacks::close);
 }
 
 Window::~Window() {

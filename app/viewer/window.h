@@ -34,6 +34,8 @@ class Window {
   // Key presses received since the window opened (every key but Shift, Ctrl, Alt and Super, also
   // those no shortcut takes): the state report gives it, so a test knows its keys arrived.
   long keys_received() const { return keys_received_; }
+  // Close requests received (the window manager's close button), for the state report too.
+  long close_requests() const { return close_requests_; }
   void swap();
   glm::ivec2 size() const;              // window pixels (cursor coordinates)
   glm::ivec2 framebuffer_size() const;  // GL pixels
@@ -48,6 +50,7 @@ class Window {
   bool control_ = false;
   bool woken_ = false;  // an event came since the last wait()
   long keys_received_ = 0;
+  long close_requests_ = 0;
   friend struct WindowCallbacks;
 };
 

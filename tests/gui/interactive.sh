@@ -14,6 +14,10 @@ fail() {
   echo "FAILED: $*" >&2
   [ -f "$work/state" ] && echo "viewer state:" >&2 && cat "$work/state" >&2
   [ -f "$work/viewer.log" ] && echo "viewer output:" >&2 && tail -5 "$work/viewer.log" >&2
+  # A viewer that hangs: where each of its threads is.
+  if [ -n "${pid:-}" ] && kill -0 "$pid" 2>/dev/null && command -v gdb >/dev/null; then
+    gdb -p "$pid" -batch -ex "thread apply all bt 8" 2>/dev/null | grep -E "^(Thread|#)" >&2
+  fi
   [ -n "${pid:-}" ] && kill "$pid" 2>/dev/null
   exit 1
 }

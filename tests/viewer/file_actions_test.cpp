@@ -121,6 +121,27 @@ TEST_F(FileActionsTest, QuitWithUnsavedFillsAsksAndCancelKeepsWorking) {
   EXPECT_TRUE(actions_.quitting());
 }
 
+// A close request while the Save dialog or the overwrite question shows is not ignored.
+TEST_F(FileActionsTest, QuitWhileADialogShowsDismissesItAndAsksOrQuits) {
+  actions_.save_as();
+  ASSERT_TRUE(actions_.dialog());
+  actions_.quit();
+  EXPECT_FALSE(actions_.dialog());
+  EXPECT_TRUE(actions_.quitting());  // nothing unsaved
+
+  FileActions again(session_);
+  fill_a_hole();
+  again.save_as();
+  again.dialog_closed(bunny_, false);  // exists: asks first
+  ASSERT_EQ(again.question(), Question::Overwrite);
+  again.quit();
+  EXPECT_EQ(again.question(), Question::SaveChanges);
+  EXPECT_FALSE(again.quitting());
+  again.answer(Answer::Discard);
+  EXPECT_TRUE(again.quitting());
+  EXPECT_EQ(fs::file_size(bunny_), original_size_);  // the overwrite never happened
+}
+
 TEST_F(FileActionsTest, QuitThenSaveQuitsOnlyOnceTheFileIsWritten) {
   fill_a_hole();
   actions_.quit();
@@ -202,11 +223,14 @@ TEST_F(FileActionsTest, AFailedOpenKeepsTheMeshAndWhereItSaves) {
   EXPECT_EQ(actions_.save_target(), folder_ / "first.obj");
 }
 
+// Open and Save As wait while a dialog shows (closing the window does not: see
+// QuitWhileADialogShowsDismissesItAndAsksOrQuits).
 TEST_F(FileActionsTest, RequestsWaitWhileADialogIsShowing) {
   actions_.save_as();
-  actions_.quit();
-  EXPECT_FALSE(actions_.quitting());
+  actions_.open();
+  actions_.open_file(folder_ / "other.obj");
   EXPECT_EQ(actions_.dialog()->kind, FileDialogRequest::Kind::Save);
+  EXPECT_EQ(session_.name(), "bunny.obj");
 }
 
 }  // namespace

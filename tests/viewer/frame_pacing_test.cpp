@@ -59,15 +59,16 @@ TEST(StateReport, WritesTheStateWhenItChangesButNotForFramesAlone) {
   state.title = "*bunny.obj - holefill viewer";
   state.notice = "Opened bunny.obj\nStitched 2 boundary edges";
   report.update(state);
-  EXPECT_EQ(read(path),
-            "frames 3\nkeys 2\nidle 1\nbusy 0\nwaiting 0\nquestion save-changes\ndialog 0\n"
-            "title *bunny.obj - holefill viewer\nnotice Opened bunny.obj\n");
+  EXPECT_EQ(
+      read(path),
+      "frames 3\nkeys 2\ncloses 0\nidle 1\nbusy 0\nwaiting 0\nquestion save-changes\ndialog 0\n"
+      "title *bunny.obj - holefill viewer\nnotice Opened bunny.obj\n");
   state.frames = 9;
   report.update(state);
   EXPECT_NE(read(path).find("frames 3\n"), std::string::npos);  // unchanged otherwise
   state.idle = false;
   report.update(state);
-  EXPECT_NE(read(path).find("frames 9\nkeys 2\nidle 0\n"), std::string::npos);
+  EXPECT_NE(read(path).find("frames 9\nkeys 2\ncloses 0\nidle 0\n"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(path.string() + ".tmp"));
   std::filesystem::remove(path);
 }
