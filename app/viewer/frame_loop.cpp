@@ -299,7 +299,9 @@ class FrameLoop {
 
   FrameKeys handle_input(const SceneArea& area) {
     FrameKeys keys;
-    for (const auto& event : window_.poll()) {
+    const auto events = window_.poll();
+    if (window_.polled_events()) pacer_.wake();
+    for (const auto& event : events) {
       const bool key = event.kind == InputEvent::Kind::Key;
       if (key) keys.keys.push_back(event.key);
       // Esc while work runs cancels it (the progress box) rather than deselecting.
@@ -364,7 +366,7 @@ class FrameLoop {
     if (scripted_ || command_.report_frame_time) return;
     for (;;) {
       const auto wait = pacer_.wait_before_frame(working());
-      if (wait && *wait == 0.0) return;
+      if ((wait && *wait == 0.0) || window_.should_close()) return;
       if (!wait) report_state(frames, true);
       if (window_.wait(wait)) {
         pacer_.wake();

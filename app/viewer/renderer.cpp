@@ -12,6 +12,9 @@ namespace {
 constexpr float kOutlinePixelBias = 24.0f;
 // Wireframe lines closer than [0] pixels apart are not drawn, from [1] apart fully.
 constexpr float kWireframeFadePixels[2] = {2.5f, 8.0f};
+// New-vertex dots on patches whose edges are closer than [0] pixels on screen are not drawn, from
+// [1] apart fully (a 10,000-vertex patch seen whole was a red blot).
+constexpr float kDotFadePixels[2] = {4.0f, 12.0f};
 
 glm::vec3 rgb(const palette::Rgb& c) { return glm::vec3(c[0], c[1], c[2]) / 255.0f; }
 glm::vec4 rgba(const palette::Rgb& c) { return glm::vec4(rgb(c), 1.0f); }
@@ -75,6 +78,19 @@ void Renderer::render(Session& session, const Camera& camera, const PixelRect& s
                       int framebuffer_width, int framebuffer_height, const DisplayOptions& display,
                       int hovered_hole) {
   sync(session);
+  SceneKey key{camera.view(),
+               camera.projection(),
+               {scene.x, scene.y, scene.width, scene.height},
+               {framebuffer_width, framebuffer_height},
+               session.mesh_version(),
+               session.comparison_version(),
+               session.shown_comparison() != nullptr,
+               session.selected(),
+               hovered_hole,
+               session.joined(),
+               {display.wireframe, display.flat, display.patch_vertices}};
+  if (cache_.show(key)) return;
+  cache_.begin(key);
   glViewport(0, 0, framebuffer_width, framebuffer_height);
   clear_rect({0, 0, framebuffer_width, framebuffer_height}, framebuffer_height,
              palette::kBackground);
@@ -95,6 +111,7 @@ void Renderer::render(Session& session, const Camera& camera, const PixelRect& s
               {session.selected(), &session.joined(), hovered_hole});
   }
   glViewport(0, 0, framebuffer_width, framebuffer_height);
+  cache_.end();
 }
 
 void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const PixelRect& rect,
@@ -155,6 +172,9 @@ void Renderer::draw_edges_and_dots(const MeshLayer& layer, const ViewTransform& 
   solid_program_.set("u_fade", 0);
   if (display.patch_vertices) {
     glEnable(GL_PROGRAM_POINT_SIZE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    solid_program_.set("u_fade_pixels", glm::vec2(kDotFadePixels[0], kDotFadePixels[1]));
     solid_program_.set("u_round", 1);
     solid_program_.set("u_point_size", 6.0f);
     // A dot at most a third of the patch's mean edge across.
@@ -163,6 +183,7 @@ void Renderer::draw_edges_and_dots(const MeshLayer& layer, const ViewTransform& 
     solid_program_.set("u_depth_bias", transform.depth_bias);
     solid_program_.set("u_color", rgba(palette::kPatchVertex));
     layer.surface.draw_patch_vertices();
+    glDisable(GL_BLEND);
     glDisable(GL_PROGRAM_POINT_SIZE);
   }
 }

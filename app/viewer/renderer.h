@@ -1,7 +1,8 @@
 // All OpenGL drawing (3.3 core): the shaded surface with faces coloured by the stage that made
 // them, the wireframe overlay, patch vertices as dots, every unfilled hole's boundary as a thick
 // line (selected and hovered holes in their own colours), and the comparison's two viewports.
-// The renderer only reads the session; it uploads a mesh again only when its version changes.
+// The renderer only reads the session; it uploads a mesh again only when its version changes,
+// and draws the scene again only when something it shows changed (scene_cache.h).
 #pragma once
 
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include "display.h"
 #include "gl_program.h"
 #include "mesh_buffers.h"
+#include "scene_cache.h"
 #include "session.h"
 
 namespace holefill::viewer {
@@ -80,6 +82,7 @@ class Renderer {
   MeshLayer main_;
   MeshLayer left_;
   MeshLayer right_;
+  SceneCache cache_;  // the last picture, shown again while nothing in it changes
 };
 
 }  // namespace holefill::viewer

@@ -141,7 +141,9 @@ bool Window::wait(std::optional<double> seconds) {
 }
 
 std::vector<InputEvent> Window::poll() {
+  woken_ = false;
   glfwPollEvents();
+  polled_events_ = woken_;
   std::vector<InputEvent> events;
   events.swap(events_);
   return events;

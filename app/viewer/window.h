@@ -31,6 +31,9 @@ class Window {
   bool wait(std::optional<double> seconds);
   // Processes pending input and returns what happened since the last call.
   std::vector<InputEvent> poll();
+  // Whether the last poll() processed any event (input or not): what it changed needs frames
+  // too, and a close request it took must not wait for the next event.
+  bool polled_events() const { return polled_events_; }
   // Key presses received since the window opened (every key but Shift, Ctrl, Alt and Super, also
   // those no shortcut takes): the state report gives it, so a test knows its keys arrived.
   long keys_received() const { return keys_received_; }
@@ -48,7 +51,8 @@ class Window {
   glm::vec2 cursor_{0.0f};
   bool shift_ = false;
   bool control_ = false;
-  bool woken_ = false;  // an event came since the last wait()
+  bool woken_ = false;  // an event came since the last wait() or poll()
+  bool polled_events_ = false;
   long keys_received_ = 0;
   long close_requests_ = 0;
   friend struct WindowCallbacks;
