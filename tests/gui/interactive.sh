@@ -216,8 +216,10 @@ fill-all-cancel)
   screenshot fill-all-progress  # the window draws (and takes screenshots) while it works
   [ "$(field busy)" = 1 ] || fail "Fill all ended before Esc: $(cat state)"
   keys Escape
-  [ "$(field notice)" = "Filling 9 holes: cancelled, mesh unchanged" ] ||
-    fail "Cancel said '$(field notice)'"
+  case "$(field notice)" in
+  "Filling "*" holes: cancelled, mesh unchanged") ;;
+  *) fail "Cancel said '$(field notice)'" ;;
+  esac
   title_is "holes.obj - holefill viewer" || fail "Cancel left a change: '$(title)'"
   "$close_request" "$window"  # nothing unsaved: quits at once
   exits_within 60 0
