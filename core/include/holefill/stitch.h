@@ -17,6 +17,13 @@ namespace holefill {
 // a few digits) differ by far less, and real features of a mesh are far larger.
 inline constexpr double kDefaultStitchRelativeTolerance = 1e-6;
 
+// The most boundary points that may lie within the tolerance of one boundary point (itself
+// included) for its edges to be stitched: a point's partners are looked for among that many
+// nearest, so the work stays linear in the boundary however large the tolerance. A point with
+// more (a tolerance far above the edge length, or the corner of 64 faces exported one by one)
+// has its edges left apart, counted in edges_left_apart.
+inline constexpr std::size_t kMostPointsWithin = 64;
+
 struct StitchOptions {
   // Boundary vertices at most this far apart may be merged. Negative: the default,
   // kDefaultStitchRelativeTolerance times the bounding box diagonal. 0: exact coincidence only.
@@ -30,7 +37,8 @@ struct StitchReport {
   std::size_t vertices_merged = 0;  // vertices removed, each merged into a vertex it lay on
   double largest_distance = 0.0;    // between a merged vertex and the vertex it was merged into
   // Boundary edges lying on another boundary edge but left apart: more than two lie there, or
-  // joining them would make a vertex or an edge non-manifold, or turn a face over.
+  // joining them would make a vertex or an edge non-manifold, or turn a face over, or one of
+  // their ends has more than kMostPointsWithin boundary points within the tolerance.
   std::size_t edges_left_apart = 0;
   // Vertices of one side of a crack that lay inside an edge of the other side: that edge was
   // split there (its face in two, both keeping the face's properties) and then stitched.
