@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "safe_scale.h"
+
 namespace holefill {
 namespace {
 
@@ -81,6 +83,20 @@ const char* to_string(LoopKind kind) {
 
 std::vector<LoopClass> classify_loops(const Mesh& mesh, const std::vector<Hole>& holes,
                                       const MeshPieces& pieces, double border_share) {
+  // Shares and plane tests do not depend on the scale, but squared lengths overflow beyond
+  // coordinates of about 1e77 and underflow below about 1e-77 (safe_scale.h): at 1e78 every
+  // area was infinite and every widest loop "the rim of a flat piece", at 1e-100 every area 0
+  // and a hole a "0 %" border. Such a mesh is classified on a copy scaled by a power of two.
+  if (!detail::SafeScale::leaves_alone(detail::SafeScale::largest_coordinate(mesh))) {
+    Mesh scaled = mesh;
+    const detail::SafeScale scale(scaled);
+    std::vector<Hole> scaled_holes;
+    for (const auto& hole : holes) {
+      scaled_holes.push_back(hole_through(scaled, hole.halfedges.front()));
+      scaled_holes.back().id = hole.id;
+    }
+    return classify_loops(scaled, scaled_holes, mesh_pieces(scaled), border_share);
+  }
   std::vector<LoopClass> classes(holes.size());
   std::vector<Point> areas(holes.size());
   std::vector<double> enclosed_sum(pieces.pieces.size(), 0.0);

@@ -8,12 +8,46 @@
 
 #include "geometry.h"
 #include "holefill/triangulate.h"
+#include "safe_scale.h"
 #include "sets_by_lowest.h"
 
 namespace holefill {
 namespace {
 constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+// The power of two the patch's points are divided by when measured: 0, or where its largest
+// coordinate lies beyond safe_scale.h's range, that coordinate's exponent. Squared lengths
+// overflow beyond about 1e77 (the fill is scaled, but its stats are measured at the mesh's own
+// scale: at 1e78 every normal was zero and the angles read 90 and 180 degrees) and underflow
+// below about 1e-77; the angles do not depend on the scale.
+int measuring_exponent(const Mesh& mesh, const Patch& patch) {
+  double largest = 0.0;
+  for (const auto f : patch.faces) {
+    for (const auto v : mesh.fv_range(f)) {
+      largest = std::max(largest, detail::SafeScale::largest_coordinate(mesh.point(v)));
+    }
+  }
+  return detail::SafeScale::leaves_alone(largest) ? 0 : std::ilogb(largest);
 }
+
+Point scaled_down(const Point& p, int exponent) {
+  return Point(std::ldexp(p[0], -exponent), std::ldexp(p[1], -exponent),
+               std::ldexp(p[2], -exponent));
+}
+
+// The face's unit normal, from its points scaled down by 2^exponent where that is not 0.
+Point face_normal(const Mesh& mesh, FaceHandle f, int exponent) {
+  if (exponent == 0) return mesh.calc_face_normal(f);
+  auto fv = mesh.cfv_iter(f);
+  const Point a = scaled_down(mesh.point(*fv), exponent);
+  const Point b = scaled_down(mesh.point(*++fv), exponent);
+  const Point c = scaled_down(mesh.point(*++fv), exponent);
+  const Point n = OpenMesh::cross(c - b, a - b);
+  const double length = n.norm();
+  return length > 0.0 ? n / length : n;
+}
+
+}  // namespace
 
 PatchStats patch_stats(const Mesh& mesh, const Patch& patch) {
   PatchStats stats;
@@ -21,17 +55,18 @@ PatchStats patch_stats(const Mesh& mesh, const Patch& patch) {
   stats.new_faces = patch.faces.size();
   for (const auto v : patch.new_vertices) ++stats.valence_histogram[mesh.valence(v)];
 
+  const int exponent = measuring_exponent(mesh, patch);
   std::unordered_set<int> edges;
   double min_angle = patch.faces.empty() ? 0.0 : std::numbers::pi, angle_sum = 0.0;
   for (const auto f : patch.faces) {
     auto fv = mesh.cfv_iter(f);
-    const Point& a = mesh.point(*fv);
-    const Point& b = mesh.point(*++fv);
-    const Point& c = mesh.point(*++fv);
+    const Point a = scaled_down(mesh.point(*fv), exponent);
+    const Point b = scaled_down(mesh.point(*++fv), exponent);
+    const Point c = scaled_down(mesh.point(*++fv), exponent);
     const geometry::TriangleMeasures m = geometry::measure_triangle(a, b, c);
     min_angle = std::min(min_angle, m.min_angle);
     angle_sum += m.min_angle;
-    stats.area += m.area;
+    stats.area += std::ldexp(m.area, 2 * exponent);
     for (const auto e : mesh.fe_range(f)) edges.insert(e.idx());
   }
   double max_dihedral = 0.0;
@@ -40,9 +75,9 @@ PatchStats patch_stats(const Mesh& mesh, const Patch& patch) {
     if (mesh.is_boundary(e)) continue;
     const auto f0 = mesh.face_handle(mesh.halfedge_handle(e, 0));
     const auto f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
-    max_dihedral = std::max(
-        max_dihedral,
-        geometry::angle_between_normals(mesh.calc_face_normal(f0), mesh.calc_face_normal(f1)));
+    max_dihedral =
+        std::max(max_dihedral, geometry::angle_between_normals(face_normal(mesh, f0, exponent),
+                                                               face_normal(mesh, f1, exponent)));
   }
   stats.min_angle_deg = min_angle * kDegrees;
   stats.mean_min_angle_deg =

@@ -10,8 +10,10 @@
 #include "cad_parts.h"
 #include "fill_guarantees.h"
 #include "hole_triangulation.h"
+#include "holefill/borders.h"
 #include "holefill/fill.h"
 #include "holefill/holes.h"
+#include "holefill/io.h"
 #include "test_meshes.h"
 
 namespace holefill::testing {
@@ -101,6 +103,56 @@ TEST(Limits, TheRestrictedSearchJoinsEachVertexToFewChords) {
   // A vertex in two pockets at each of three levels and among its nearest neighbours' choices.
   EXPECT_LE(most, 6 * search.pocket_edges + 4 * search.nearest_neighbours);
   EXPECT_LE(chords.size(), static_cast<std::size_t>(kEdges) * 2 * search.pocket_edges);
+}
+
+// The mesh with every coordinate times 2^exponent (exact).
+Mesh scaled_by_power_of_two(Mesh mesh, int exponent) {
+  for (const auto v : mesh.vertices()) {
+    const Point p = mesh.point(v);
+    mesh.set_point(v, Point(std::ldexp(p[0], exponent), std::ldexp(p[1], exponent),
+                            std::ldexp(p[2], exponent)));
+  }
+  return mesh;
+}
+
+TEST(Limits, DecisionsAndStatisticsDoNotDependOnTheScale) {
+  // From about 1e78 squared lengths overflow: the bunny's and an open cube's widest loops were
+  // "the rim of a flat piece" (left open, exit 0) and the patch angles read 90 / 180 degrees; at
+  // 1e-100 areas underflowed and a hole was a "0 %" border.
+  const std::filesystem::path assets(HOLEFILL_ASSETS_DIR);
+  const Mesh bunny = load_mesh(assets / "bunny.obj");
+  const Mesh cube = open_cube();
+  for (const Mesh* mesh : {&bunny, &cube}) {
+    const Mesh& original = *mesh;
+    const auto holes = find_holes(original);
+    const auto classes = classify_loops(original, holes, mesh_pieces(original));
+    Mesh filled = original;
+    const auto fills = fill_holes(filled, holes, {});
+    for (const int exponent : {260, -333}) {  // 1.9e78 and 5.7e-101
+      SCOPED_TRACE(exponent);
+      const Mesh mesh = scaled_by_power_of_two(original, exponent);
+      const auto scaled_holes = find_holes(mesh);
+      ASSERT_EQ(scaled_holes.size(), holes.size());
+      const auto scaled_classes = classify_loops(mesh, scaled_holes, mesh_pieces(mesh));
+      for (std::size_t i = 0; i < holes.size(); ++i) {
+        EXPECT_EQ(scaled_classes[i].kind, classes[i].kind) << i << ": " << scaled_classes[i].reason;
+        EXPECT_EQ(scaled_classes[i].spanned_share, classes[i].spanned_share) << i;
+      }
+      Mesh scaled_filled = mesh;
+      const auto scaled_fills = fill_holes(scaled_filled, scaled_holes, {});
+      ASSERT_EQ(scaled_fills.size(), fills.size());
+      for (std::size_t i = 0; i < fills.size(); ++i) {
+        const PatchStats &a = fills[i].stats, &b = scaled_fills[i].stats;
+        EXPECT_EQ(b.new_faces, a.new_faces) << i;
+        EXPECT_EQ(b.min_angle_deg, a.min_angle_deg) << i;
+        EXPECT_EQ(b.mean_min_angle_deg, a.mean_min_angle_deg) << i;
+        // Normals come from the scaled points by a formula of their own (OpenMesh's would
+        // overflow): the same angle up to rounding.
+        EXPECT_NEAR(b.max_dihedral_deg, a.max_dihedral_deg, 1e-9) << i;
+        EXPECT_DOUBLE_EQ(std::ldexp(b.area, -2 * exponent), a.area) << i;
+      }
+    }
+  }
 }
 
 }  // namespace
