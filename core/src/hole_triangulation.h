@@ -22,8 +22,15 @@ struct TriangulateHoleResult {
   std::string failure;         // why not, otherwise
 };
 
-// The hole's triangulation, or why there is none. Reads the mesh only, so plans for several
-// holes can be made at once on several threads.
+// The most times a hole's boundary may pass through one vertex for a patch to be planned: a
+// loop passing a vertex that often runs around a fan of pieces meeting only there (5,000 lone
+// triangles around one vertex made one 15,000-edge loop, planned for 145 s in 3.3 GB, whose patch
+// crossed itself), not around a hole.
+inline constexpr int kMaxVertexPasses = 16;
+
+// The hole's triangulation, or why there is none (e.g. more than kMaxVertexPasses passes through
+// one vertex). Reads the mesh only, so plans for several holes can be made at once on several
+// threads.
 PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
                                         const TriangulateOptions& options);
 

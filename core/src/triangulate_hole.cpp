@@ -130,8 +130,23 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
     return result;
   }
   std::unordered_map<int, int> seen;
-  const bool pinched = std::any_of(hole.vertices.begin(), hole.vertices.end(),
-                                   [&](VertexHandle v) { return ++seen[v.idx()] > 1; });
+  int most_passes = 0, busiest = -1;
+  for (const auto v : hole.vertices) {
+    if (const int passes = ++seen[v.idx()]; passes > most_passes) {
+      most_passes = passes;
+      busiest = v.idx();
+    }
+  }
+  const bool pinched = most_passes > 1;
+  if (most_passes > kMaxVertexPasses) {
+    result.failure = "its boundary passes through vertex " + std::to_string(busiest + 1) + " " +
+                     std::to_string(seen[busiest]) + " times, more than the " +
+                     std::to_string(kMaxVertexPasses) +
+                     " a patch is planned for (kMaxVertexPasses): it runs around pieces that "
+                     "meet only there, not around a hole (--remove-small-components removes "
+                     "small pieces)";
+    return result;
+  }
   if (const auto twins = coincident_vertices(mesh, hole)) {
     result.failure = "its boundary passes twice through one position (vertices " +
                      std::to_string(twins->first + 1) + " and " +

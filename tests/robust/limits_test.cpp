@@ -105,6 +105,44 @@ TEST(Limits, TheRestrictedSearchJoinsEachVertexToFewChords) {
   EXPECT_LE(chords.size(), static_cast<std::size_t>(kEdges) * 2 * search.pocket_edges);
 }
 
+// n triangles around the origin sharing only it (vertex 0), each on two rim points of its own,
+// heights varying so that no two lie in one plane.
+Mesh fan_of_lone_triangles(int n) {
+  Mesh mesh;
+  const VertexHandle centre = mesh.add_vertex(Point(0.0, 0.0, 0.0));
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / n, b = 2.0 * std::numbers::pi * (i + 0.5) / n;
+    const VertexHandle p = mesh.add_vertex(Point(std::cos(a), std::sin(a), 0.01 * (i % 7)));
+    const VertexHandle q = mesh.add_vertex(Point(std::cos(b), std::sin(b), 0.01 * (i % 5)));
+    mesh.add_face(centre, p, q);
+  }
+  return mesh;
+}
+
+TEST(Limits, ALoopThroughOneVertexTooManyTimesIsRefusedNamingTheLimit) {
+  // 5,000 lone triangles around one vertex make one 15,000-edge loop through it 5,000 times:
+  // planned for 145 s in 3.3 GB into a patch crossing itself (exit 5). Refused at once now.
+  for (const int n : {kMaxVertexPasses + 1, 5000}) {
+    const Mesh before = fan_of_lone_triangles(n);
+    const auto holes = find_holes(before);
+    ASSERT_EQ(holes.size(), 1u);
+    ASSERT_EQ(holes[0].size(), 3u * n);
+    Mesh mesh = before;
+    const auto fills = fill_holes(mesh, holes, {});
+    ASSERT_EQ(fills.size(), 1u);
+    EXPECT_EQ(fills[0].failure, "its boundary passes through vertex 1 " + std::to_string(n) +
+                                    " times, more than the " + std::to_string(kMaxVertexPasses) +
+                                    " a patch is planned for (kMaxVertexPasses): it runs around "
+                                    "pieces that meet only there, not around a hole "
+                                    "(--remove-small-components removes small pieces)");
+    EXPECT_EQ(check_fill_guarantees(before, holes, mesh, fills), "");
+  }
+  // At the limit the loop is planned as before (whatever the patch, no refusal for passes).
+  const Mesh at_limit = fan_of_lone_triangles(kMaxVertexPasses);
+  const auto plan = plan_triangulation(at_limit, find_holes(at_limit)[0], {});
+  EXPECT_EQ(plan.failure.find("kMaxVertexPasses"), std::string::npos) << plan.failure;
+}
+
 // The mesh with every coordinate times 2^exponent (exact).
 Mesh scaled_by_power_of_two(Mesh mesh, int exponent) {
   for (const auto v : mesh.vertices()) {
