@@ -12,6 +12,7 @@ PACKAGES=(
   libglfw3-dev libglm-dev libimgui-dev libepoxy-dev libstb-dev
   xvfb xauth libgl1-mesa-dri
   xdotool libx11-dev
+  python3-dev python3-pybind11 python3-numpy python3-pytest
 )
 
 missing=()

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <utility>
 
+#include "commands.h"
 #include "number_checks.h"
 
 namespace holefill::cli {
@@ -139,7 +140,6 @@ void add_format_option(CLI::App& command, std::string& format) {
 }
 
 void add_fill_options(CLI::App& command, FillArguments& a) {
-  set_defaults(a);
   command.option_defaults()->always_capture_default();
   command.add_option("MESH", a.input, "the mesh to fill (.obj .off .ply .stl; -: stdin)")
       ->required();
@@ -150,10 +150,43 @@ void add_fill_options(CLI::App& command, FillArguments& a) {
   add_format_option(command, a.format);
   command.add_option("--report", a.report_path,
                      "write per-hole statistics as JSON to this file (-: stdout)");
+  add_fill_choices(command, a);
+}
+
+void add_fill_choices(CLI::App& command, FillArguments& a) {
+  set_defaults(a);
+  command.option_defaults()->always_capture_default();
   add_triangulation_options(command, a);
   add_refinement_and_smoothing_options(command, a);
   add_selection_options(command, a);
   add_preparation_options(command, a.preparation);
+}
+
+FillArguments parse_fill_choices(const std::vector<std::string>& args) {
+  CLI::App command;
+  FillArguments a;
+  add_fill_choices(command, a);
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+  try {
+    command.parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(e.what());
+  }
+  finish_fill_options(a);
+  return a;
+}
+
+std::vector<OptionHelp> fill_choice_help() {
+  CLI::App command;
+  FillArguments a;
+  add_fill_choices(command, a);
+  std::vector<OptionHelp> help;
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->get_lnames().empty() || option == command.get_help_ptr()) continue;
+    help.push_back({"--" + option->get_lnames().front(), option->get_description(),
+                    option->get_default_str()});
+  }
+  return help;
 }
 
 void finish_fill_options(FillArguments& a) {

@@ -34,6 +34,22 @@ struct FillArguments {
 // Adds fill's options to `command`, writing into `arguments` (which must outlive the parse).
 void add_fill_options(CLI::App& command, FillArguments& arguments);
 
+// Adds the options that say how to fill (every option of fill's but MESH, -o, --format and
+// --report), writing into `arguments`.
+void add_fill_choices(CLI::App& command, FillArguments& arguments);
+
+// Those options parsed from `args` (e.g. {"--tau", "2"}) and finished (finish_fill_options), for
+// callers that take fill's options from elsewhere than a command line (the Python module).
+// Throws UsageError with CLI11's message for an unknown option or a value out of its range.
+FillArguments parse_fill_choices(const std::vector<std::string>& args);
+
+// One option of add_fill_choices as the help shows it: its long name ("--tau"), the help text
+// and the default.
+struct OptionHelp {
+  std::string flag, description, default_text;
+};
+std::vector<OptionHelp> fill_choice_help();
+
 // Adds --format, the format of a mesh read from standard input or written to standard output.
 void add_format_option(CLI::App& command, std::string& format);
 
