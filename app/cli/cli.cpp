@@ -3,10 +3,12 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
+#include <functional>
 #include <new>
 #include <ostream>
 #include <sstream>
 
+#include "batch_command.h"
 #include "commands.h"
 #include "holefill/errors.h"
 #include "holefill/version.h"
@@ -71,6 +73,7 @@ int dispatch(CommandLine& line, const Streams& streams) {
   if (line.info->parsed()) return run_info(line.info_arguments, streams);
   if (line.fill->parsed()) {
     finish_fill_options(line.fill_arguments);
+    if (is_batch(line.fill_arguments)) return run_batch(line.fill_arguments, streams);
     return run_fill(line.fill_arguments, streams);
   }
   if (line.help_topic.empty()) {
@@ -81,23 +84,26 @@ int dispatch(CommandLine& line, const Streams& streams) {
   return kOk;
 }
 
-// Runs the parsed command, mapping what it throws to exit codes.
-int run_command(CommandLine& line, const Streams& streams) {
+}  // namespace
+
+int exit_code_of(const std::function<int()>& work, std::ostream& err) {
   try {
-    return dispatch(line, streams);
+    return work();
   } catch (const UsageError& e) {
-    return usage_error(e.what(), streams.err);
+    return usage_error(e.what(), err);
   } catch (const FileError& e) {
-    streams.err << "holefill: " << e.what() << "\n";
+    err << "holefill: " << e.what() << "\n";
     return kBadInput;
   } catch (const std::bad_alloc&) {
-    streams.err << "holefill: out of memory; nothing was written\n";
+    err << "holefill: out of memory; nothing was written\n";
     return kOutOfMemory;
   } catch (const std::exception& e) {
-    streams.err << "holefill: internal error: " << e.what() << " (please report it)\n";
+    err << "holefill: internal error: " << e.what() << " (please report it)\n";
     return kInternalError;
   }
 }
+
+namespace {
 
 // A standard output that could not be written (`info > /dev/full`, a closed pipe) fails the run.
 // The reason is the last system error: the failed flush's, or that of the write that failed
@@ -127,7 +133,8 @@ int run(const std::vector<std::string>& args, std::istream& in, std::ostream& ou
     }
     return usage_error(e.what(), err);
   }
-  return check_stdout(run_command(line, Streams{in, out, err, line.verbosity()}), out, err);
+  const Streams streams{in, out, err, line.verbosity()};
+  return check_stdout(exit_code_of([&] { return dispatch(line, streams); }, err), out, err);
 }
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {

@@ -1,6 +1,7 @@
 // The subcommands of `holefill`, each given its parsed arguments and the streams to write to.
 #pragma once
 
+#include <functional>
 #include <iosfwd>
 #include <stdexcept>
 #include <string>
@@ -35,6 +36,9 @@ struct InfoArguments {
 };
 
 int run_info(const InfoArguments& arguments, const Streams& streams);
+// Runs `work` and returns its exit code, or the code of what it throws (UsageError, FileError,
+// bad_alloc, anything else), after saying why on `err` as the command line does.
+int exit_code_of(const std::function<int()>& work, std::ostream& err);
 int run_fill(FillArguments& arguments, const Streams& streams);
 
 }  // namespace holefill::cli

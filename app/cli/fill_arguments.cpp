@@ -141,12 +141,19 @@ void add_format_option(CLI::App& command, std::string& format) {
 
 void add_fill_options(CLI::App& command, FillArguments& a) {
   command.option_defaults()->always_capture_default();
-  command.add_option("MESH", a.input, "the mesh to fill (.obj .off .ply .stl; -: stdin)")
+  command
+      .add_option("MESH", a.inputs,
+                  "the mesh to fill (.obj .off .ply .stl; -: stdin); several, or\n"
+                  "folders of them: each filled into the folder -o names")
       ->required();
   command
       .add_option("-o,--output", a.output,
-                  "where to write the result (.obj .off .ply .stl; -: stdout)")
+                  "where to write the result (.obj .off .ply .stl; -: stdout),\n"
+                  "or a folder (ending in /) for several meshes")
       ->required();
+  command
+      .add_option("-j,--jobs", a.jobs, "several meshes: how many to fill at once (0: one per core)")
+      ->transform(whole_number(0, 1024));
   add_format_option(command, a.format);
   command.add_option("--report", a.report_path,
                      "write per-hole statistics as JSON to this file (-: stdout)");
@@ -190,6 +197,7 @@ std::vector<OptionHelp> fill_choice_help() {
 }
 
 void finish_fill_options(FillArguments& a) {
+  if (a.inputs.size() == 1) a.input = a.inputs.front();
   parse_weight(a.weight, a.options.triangulate.weight);
   a.options.triangulate.fold_limit = a.fold_limit_degrees / kDegreesPerRadian;
   a.options.refine.remesh = a.remesh == "on";

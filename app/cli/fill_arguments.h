@@ -16,7 +16,9 @@ class App;  // CLI11's (CLI/CLI.hpp): only the .cpp files that register options 
 namespace holefill::cli {
 
 struct FillArguments {
-  std::string input;
+  std::vector<std::string> inputs;  // as typed: meshes or folders (several: a batch)
+  unsigned jobs = 0;                // meshes of a batch filled at once (-j; 0: one per core)
+  std::string input;                // the mesh being filled
   std::string output;
   std::string report_path;
   std::string format;                  // of "-" (standard input or output): obj, off, ply or stl
