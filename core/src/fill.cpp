@@ -14,6 +14,7 @@
 #include "avoid_intersections.h"
 #include "hole_triangulation.h"
 #include "holefill/attributes.h"
+#include "holefill/errors.h"
 #include "holefill/loop_groups.h"
 #include "patch_intersections.h"
 #include "patch_room.h"
@@ -156,7 +157,9 @@ void smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
   for (const auto v : fill.patch.new_vertices) positions.push_back(mesh.point(v));
   std::string problem;
   std::size_t intersections = 0;
-  fill.times.smooth_seconds = timed([&] { smooth(mesh, fill, options.smooth); });
+  SmoothOptions smoothing = options.smooth;
+  if (fill.fair_rescue) smoothing.method = SmoothMethod::Fair;
+  fill.times.smooth_seconds = timed([&] { smooth(mesh, fill, smoothing); });
   fill.times.check_seconds +=
       timed([&] { problem = stage_problem(mesh, fill, index, options, intersections); });
   if (problem.empty()) {
@@ -184,6 +187,23 @@ bool later_stages_clear_it(Mesh& mesh, const HoleFill& fill, const FillOptions& 
   return clear;
 }
 
+// later_stages_clear_it, and where umbrella smoothing leaves the patch cutting the mesh, the same
+// with fairing, which bends the patch's interior away from the surface around it (a hole next to
+// another part, an island across a rim): then the fill is faired (HoleFill::fair_rescue).
+bool later_stages_or_fairing_clear_it(Mesh& mesh, HoleFill& fill, const FillOptions& options,
+                                      const detail::MeshFaceIndex* index) {
+  if (later_stages_clear_it(mesh, fill, options, index)) return true;
+  if (options.last_stage < Stage::Smoothed || options.smooth.method == SmoothMethod::Fair) {
+    return false;
+  }
+  HoleFill faired = fill;
+  faired.fair_rescue = true;
+  if (!later_stages_clear_it(mesh, faired, options, index)) return false;
+  fill.fair_rescue = true;
+  fill.smoothing_note = "faired instead of umbrella-smoothed: the umbrella's patch cut the mesh";
+  return true;
+}
+
 // Do no harm, after each stage: a patch that intersects the mesh or an earlier patch (its pairs
 // counted by both tests) stays only when intersections are allowed, or, just triangulated, when
 // the stages still to run clear it (refinement and smoothing move its interior). Otherwise it is
@@ -196,7 +216,7 @@ bool may_stay(Mesh& mesh, HoleFill& fill, const FillOptions& options,
   if (pairs == 0 || options.allow_intersections) return true;
   if (fill.stage() > Stage::Triangulated && fill.stage() < options.last_stage) return true;
   if (fill.stage() == Stage::Triangulated && options.last_stage > Stage::Triangulated &&
-      later_stages_clear_it(mesh, fill, options, index)) {
+      later_stages_or_fairing_clear_it(mesh, fill, options, index)) {
     return true;
   }
   if (!detail::patch_is_newest(mesh, fill.patch)) return true;
@@ -265,6 +285,18 @@ auto at_safe_scale(Mesh& mesh, Work&& work) {
 
 void measure_again(const Mesh& mesh, HoleFill& fill) {
   if (fill.stage() != Stage::Original) fill.stats = patch_stats(mesh, fill.patch);
+}
+
+// The precondition of every public entry point that is to triangulate: each loop is a boundary
+// loop of the mesh as it is (not a stale Hole, nor one of another mesh).
+void require_boundary_loops(const Mesh& mesh, const std::vector<const Hole*>& loops) {
+  for (const Hole* loop : loops) {
+    if (is_boundary_loop(mesh, *loop)) continue;
+    throw InvalidHoleError(
+        "hole " + std::to_string(loop->id) +
+        " is not a boundary loop of this mesh: it was filled since it was "
+        "found, or found on another mesh (find_holes gives the loops as they are)");
+  }
 }
 
 // Loops joined by bridges are triangulated with constraints of their own (bridge.h), which the
@@ -365,6 +397,7 @@ StageRun advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions
 }
 
 HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options) {
+  require_boundary_loops(mesh, {&hole});
   auto [fill, scaled] =
       at_safe_scale(mesh, [&] { return fill_planned(mesh, hole, options, nullptr, nullptr); });
   if (scaled) measure_again(mesh, fill);
@@ -387,6 +420,7 @@ HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
 
 StageRun advance_joined(Mesh& mesh, const std::vector<const Hole*>& loops, HoleFill& fill,
                         const FillOptions& options) {
+  if (fill.stage() == Stage::Original && !fill.failed()) require_boundary_loops(mesh, loops);
   const auto [advanced, scaled] = at_safe_scale(
       mesh, [&] { return detail::advance_unscaled(mesh, loops, fill, options, nullptr); });
   if (scaled) measure_again(mesh, fill);
@@ -423,6 +457,11 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
   for (auto& group : group_loops(mesh, holes, find_islands(mesh, holes, options.islands),
                                  selection.bridges, options.join)) {
     if (selects(selection, group, holes)) chosen.push_back(std::move(group));
+  }
+  for (const auto& group : chosen) {
+    std::vector<const Hole*> loops;
+    for (const int id : group.holes) loops.push_back(&holes[id]);
+    require_boundary_loops(mesh, loops);
   }
   auto [fills, scaled] =
       at_safe_scale(mesh, [&] { return fill_groups(mesh, holes, chosen, options, progress); });

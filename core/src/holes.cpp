@@ -1,9 +1,12 @@
 #include "holefill/holes.h"
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "coincident_vertices.h"
 #include "deletion_flags.h"
 
 namespace holefill {
@@ -134,5 +137,39 @@ std::vector<Hole> find_holes(const Mesh& mesh) {
   for (std::size_t i = 0; i < holes.size(); ++i) holes[i].id = static_cast<int>(i);
   return holes;
 }
+
+bool is_boundary_loop(const Mesh& mesh, const Hole& hole) {
+  const std::size_t n = hole.halfedges.size();
+  if (n == 0 || hole.vertices.size() != n) return false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const HalfedgeHandle h = hole.halfedges[i];
+    if (!h.is_valid() || static_cast<std::size_t>(h.idx()) >= mesh.n_halfedges() ||
+        !mesh.is_boundary(h) || mesh.from_vertex_handle(h) != hole.vertices[i] ||
+        mesh.to_vertex_handle(h) != hole.vertices[(i + 1) % n]) {
+      return false;
+    }
+  }
+  return true;
+}
+
+namespace detail {
+
+std::optional<std::pair<int, int>> coincident_vertices(const Mesh& mesh, const Hole& hole) {
+  std::vector<std::pair<std::array<double, 3>, int>> at;
+  for (const auto v : hole.vertices) {
+    const Point& p = mesh.point(v);
+    at.push_back({{p[0], p[1], p[2]}, v.idx()});
+  }
+  std::sort(at.begin(), at.end());
+  for (std::size_t i = 1; i < at.size(); ++i) {
+    if (at[i].first == at[i - 1].first && at[i].second != at[i - 1].second) {
+      return std::pair<int, int>(std::min(at[i].second, at[i - 1].second),
+                                 std::max(at[i].second, at[i - 1].second));
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace detail
 
 }  // namespace holefill

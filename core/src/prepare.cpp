@@ -1,7 +1,10 @@
 #include "holefill/prepare.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <utility>
+
+#include "coincident_vertices.h"
 
 namespace holefill {
 namespace {
@@ -40,14 +43,16 @@ void tell_stitching(const StitchReport& report, std::vector<std::string>& out) {
 
 void tell_welding(const WeldReport& report, std::vector<std::string>& out) {
   if (report.positions > 0) {
-    out.push_back("welded " + counted(report.vertices_welded, "boundary vertex") +
+    out.push_back("welded " + std::to_string(report.vertices_welded) +
+                  (report.vertices_welded == 1 ? " boundary vertex" : " boundary vertices") +
                   " into the vertex at the same position (" + counted(report.positions, "place") +
                   " where holes touch), so that each hole there can be filled");
   }
   if (report.positions_left > 0) {
     out.push_back(counted(report.positions_left, "place") +
                   " where boundary vertices share a position were left apart (welding would "
-                  "double an edge or collapse a face)");
+                  "double an edge or collapse a face, or leave a hole there that passes twice "
+                  "through one position)");
   }
 }
 
@@ -88,6 +93,41 @@ class LoopLines {
   std::vector<std::string> lines_;
 };
 
+// The welded positions whose loops still pass twice through one position (another pair there left
+// apart): those holes could not be filled, and their welds would only leave pinches.
+std::vector<Point> unhelpful_welds(Mesh& mesh, const std::vector<Point>& welded_at) {
+  std::vector<Hole> holes = find_holes(mesh);
+  if (separate_touching_holes(mesh, holes) > 0) holes = find_holes(mesh);
+  std::vector<Point> unhelpful;
+  for (const auto& hole : holes) {
+    if (!detail::coincident_vertices(mesh, hole)) continue;
+    for (const auto v : hole.vertices) {
+      const Point& p = mesh.point(v);
+      if (std::find(welded_at.begin(), welded_at.end(), p) != welded_at.end() &&
+          std::find(unhelpful.begin(), unhelpful.end(), p) == unhelpful.end()) {
+        unhelpful.push_back(p);
+      }
+    }
+  }
+  return unhelpful;
+}
+
+// Welds touching vertices (weld.h) where the holes there can then be filled: a weld whose loop
+// still passes twice through one position is taken back (the mesh welded again from a copy without
+// it), so that no pinch is left that no fill closes. Only meshes with touching vertices pay for the
+// copy.
+WeldReport weld_where_it_helps(Mesh& mesh, double tolerance) {
+  if (!has_touching_vertices(mesh, tolerance)) return {};
+  Mesh unwelded = mesh;
+  WeldReport report = weld_touching_vertices(mesh, tolerance);
+  const std::vector<Point> unhelpful = unhelpful_welds(mesh, report.welded_at);
+  if (unhelpful.empty()) return report;
+  mesh = std::move(unwelded);
+  report = weld_touching_vertices(mesh, tolerance, unhelpful);
+  report.positions_left += unhelpful.size();
+  return report;
+}
+
 }  // namespace
 
 PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options) {
@@ -96,7 +136,7 @@ PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options) {
     prepared.stitched = true;
     prepared.stitch = stitch_borders(mesh, options.stitch_options);
     tell_stitching(prepared.stitch, prepared.messages);
-    prepared.weld = weld_touching_vertices(mesh, prepared.stitch.tolerance);
+    prepared.weld = weld_where_it_helps(mesh, prepared.stitch.tolerance);
     tell_welding(prepared.weld, prepared.messages);
   }
   if (options.remove_pieces_up_to > 0) {

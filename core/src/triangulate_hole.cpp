@@ -4,6 +4,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "coincident_vertices.h"
 #include "deletion_flags.h"
 #include "hole_triangulation.h"
 #include "vertex_link.h"
@@ -50,23 +51,6 @@ bool is_back_of_lone_triangle(const Mesh& mesh, const Hole& hole) {
   const FaceHandle face = mesh.opposite_face_handle(hole.halfedges[0]);
   return face.is_valid() && face == mesh.opposite_face_handle(hole.halfedges[1]) &&
          face == mesh.opposite_face_handle(hole.halfedges[2]);
-}
-
-// Two different vertices of the loop at exactly the same position, if any.
-std::optional<std::pair<int, int>> coincident_vertices(const Mesh& mesh, const Hole& hole) {
-  std::vector<std::pair<std::array<double, 3>, int>> at;
-  for (const auto v : hole.vertices) {
-    const Point& p = mesh.point(v);
-    at.push_back({{p[0], p[1], p[2]}, v.idx()});
-  }
-  std::sort(at.begin(), at.end());
-  for (std::size_t i = 1; i < at.size(); ++i) {
-    if (at[i].first == at[i - 1].first && at[i].second != at[i - 1].second) {
-      return std::pair<int, int>(std::min(at[i].second, at[i - 1].second),
-                                 std::max(at[i].second, at[i - 1].second));
-    }
-  }
-  return std::nullopt;
 }
 
 // ---- Pinched loops: a loop passing more than once through one vertex X is triangulated as a
@@ -147,7 +131,7 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
                      "small pieces)";
     return result;
   }
-  if (const auto twins = coincident_vertices(mesh, hole)) {
+  if (const auto twins = detail::coincident_vertices(mesh, hole)) {
     result.failure = "its boundary passes twice through one position (vertices " +
                      std::to_string(twins->first + 1) + " and " +
                      std::to_string(twins->second + 1) +

@@ -82,9 +82,18 @@ std::vector<std::vector<VertexHandle>> touching_groups(const Mesh& mesh, double 
 
 }  // namespace
 
-WeldReport weld_touching_vertices(Mesh& mesh, double tolerance) {
+bool has_touching_vertices(const Mesh& mesh, double tolerance) {
+  return !touching_groups(mesh, tolerance).empty();
+}
+
+WeldReport weld_touching_vertices(Mesh& mesh, double tolerance, const std::vector<Point>& apart) {
   WeldReport report;
-  const auto groups = touching_groups(mesh, tolerance);
+  auto groups = touching_groups(mesh, tolerance);
+  std::erase_if(groups, [&](const std::vector<VertexHandle>& group) {
+    return std::any_of(group.begin(), group.end(), [&](VertexHandle v) {
+      return std::find(apart.begin(), apart.end(), mesh.point(v)) != apart.end();
+    });
+  });
   if (groups.empty()) return report;
   std::vector<int> kept_of(mesh.n_vertices());
   for (const auto v : mesh.vertices()) kept_of[v.idx()] = v.idx();
@@ -100,12 +109,14 @@ WeldReport weld_touching_vertices(Mesh& mesh, double tolerance) {
   for (const auto& group : groups) {
     if (kept_of[group.back().idx()] == group.back().idx()) continue;
     ++report.positions;
+    report.welded_at.push_back(mesh.point(group.front()));
     report.vertices_welded += group.size() - 1;
   }
   if (report.positions == 0) return report;
   if (!detail::merge_vertices(mesh, kept_of)) {  // OpenMesh refused a face: nothing welded
     report.positions_left += report.positions;
     report.positions = report.vertices_welded = 0;
+    report.welded_at.clear();
   }
   return report;
 }

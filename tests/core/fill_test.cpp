@@ -9,6 +9,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "holefill/errors.h"
+#include "holefill/errors.h"
 #include "holefill/holes.h"
 #include "holefill/patch.h"
 #include "island_meshes.h"
@@ -187,6 +189,33 @@ TEST(Fill, FillsAPinchedLoopSoThatItsVertexBecomesManifold) {
   EXPECT_TRUE(is_oriented_manifold(mesh));  // vertex 0 included: each pass closed one gap
   EXPECT_FALSE(mesh.is_boundary(v[0]));
   EXPECT_TRUE(find_holes(mesh).empty());
+}
+
+TEST(Fill, AStaleHoleOrOneNotOnTheBoundaryIsRefusedBeforeAnyWork) {
+  Mesh mesh = testing::sphere_with_two_holes();
+  const auto holes = find_holes(mesh);
+  ASSERT_EQ(holes.size(), 2u);
+  EXPECT_TRUE(is_boundary_loop(mesh, holes[1]));
+  ASSERT_FALSE(fill_hole(mesh, holes[1], {}).failed());
+  EXPECT_FALSE(is_boundary_loop(mesh, holes[1]));
+  const std::size_t faces = mesh.n_faces();
+  // The same Hole again: filled since it was found.
+  EXPECT_THROW(fill_hole(mesh, holes[1], {}), InvalidHoleError);
+  HoleFill fill;
+  EXPECT_THROW(advance(mesh, holes[1], fill, {}), InvalidHoleError);
+  EXPECT_THROW(fill_holes(mesh, holes, {}), InvalidHoleError);
+  EXPECT_EQ(mesh.n_faces(), faces);
+  // A loop made by hand around a face: its halfedges are not on the boundary.
+  Hole inside;
+  for (const auto h : mesh.fh_range(*mesh.faces_begin())) {
+    inside.halfedges.push_back(h);
+    inside.vertices.push_back(mesh.from_vertex_handle(h));
+  }
+  EXPECT_FALSE(is_boundary_loop(mesh, inside));
+  EXPECT_THROW(fill_hole(mesh, inside, {}), InvalidHoleError);
+  // The other hole, found before the fill, is still one: it fills.
+  EXPECT_TRUE(is_boundary_loop(mesh, holes[0]));
+  EXPECT_FALSE(fill_hole(mesh, holes[0], {}).failed());
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// The project's exception hierarchy, thrown at the I/O boundary (the pipeline itself returns
-// results that say why a hole was not filled, rather than throwing).
+// The project's exception hierarchy, thrown at the I/O boundary and for broken preconditions (the
+// pipeline itself returns results that say why a hole was not filled, rather than throwing).
 #pragma once
 
 #include <filesystem>
@@ -31,6 +31,14 @@ class FileError : public Error {
 class InvalidMeshError : public FileError {
  public:
   using FileError::FileError;
+};
+
+// A Hole handed to the pipeline is not a boundary loop of the mesh: it was filled since it was
+// found (a stale Hole), it was found on another mesh, or it was made by hand over edges that are
+// not on a boundary. Nothing was changed; find_holes gives the mesh's loops as they are.
+class InvalidHoleError : public Error {
+ public:
+  using Error::Error;
 };
 
 }  // namespace holefill

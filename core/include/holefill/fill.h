@@ -83,6 +83,9 @@ struct HoleFill {
   // FillOptions::allow_intersections): the intersecting pairs that patch had (the search's count,
   // or the exact check's where only that one found them). 0 otherwise.
   std::size_t refused_intersections = 0;
+  // Smoothed by fairing whatever the options say: the triangulated patch cut the mesh, umbrella
+  // smoothing left it so and fairing cleared it (do no harm). smoothing_note says so.
+  bool fair_rescue = false;
   IntersectionAvoidance avoidance;
 
   Stage stage() const { return patch.stage; }
@@ -96,7 +99,10 @@ enum class StageRun {
   Failed,   // the stage could not run (now or before): fill.failure says why, mesh unchanged
 };
 
-// Runs the next stage on `fill` (which starts as HoleFill{} for `hole`).
+// Runs the next stage on `fill` (which starts as HoleFill{} for `hole`). Throws InvalidHoleError
+// (errors.h), changing nothing, when the first stage is to run and `hole` is not a boundary loop
+// of `mesh` as it is (is_boundary_loop: a stale Hole, or one of another mesh); so do
+// fill_hole, fill_joined_holes, advance_joined and fill_holes (for the holes they select).
 StageRun advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options);
 
 // Runs the stages up to options.last_stage on one hole.

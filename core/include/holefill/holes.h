@@ -38,6 +38,11 @@ std::vector<Hole> find_holes(const Mesh& mesh);
 // 0 (the loops added), find the holes again.
 std::size_t separate_touching_holes(Mesh& mesh, const std::vector<Hole>& holes);
 
+// Whether `hole` is a boundary loop of `mesh` as it is now: each of its halfedges exists, is on
+// the boundary, and runs from its vertex to the next one. False for a hole filled since it was
+// found (its halfedges have faces), or one of another mesh.
+bool is_boundary_loop(const Mesh& mesh, const Hole& hole);
+
 // The loop through one boundary halfedge, as find_holes would describe it (id left at -1).
 Hole hole_through(const Mesh& mesh, HalfedgeHandle boundary_halfedge);
 

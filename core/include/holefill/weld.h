@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "holefill/mesh.h"
 
@@ -14,6 +15,7 @@ namespace holefill {
 
 struct WeldReport {
   std::size_t positions = 0;        // positions where vertices were welded
+  std::vector<Point> welded_at;     // those positions (each the kept vertex's)
   std::size_t vertices_welded = 0;  // vertices removed, each welded into one it lay on
   std::size_t positions_left = 0;   // positions whose vertices were left apart (below)
 };
@@ -24,7 +26,12 @@ struct WeldReport {
 // the faces around the welded vertex stay consistently oriented. Of each group the vertex with the
 // lowest index is kept, with its position and properties, and the faces of the others are put on
 // it with their properties; face indices are kept, vertex indices as stitch_borders keeps them.
+// Groups with a vertex at exactly one of `apart`'s positions are left apart (and not counted).
 // Expects a mesh without deleted elements; a mesh with nothing to weld is left untouched.
-WeldReport weld_touching_vertices(Mesh& mesh, double tolerance);
+WeldReport weld_touching_vertices(Mesh& mesh, double tolerance,
+                                  const std::vector<Point>& apart = {});
+
+// Whether weld_touching_vertices would find any group to judge (a quick look, nothing changed).
+bool has_touching_vertices(const Mesh& mesh, double tolerance);
 
 }  // namespace holefill
