@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include "holefill/holes.h"
+#include "holefill/prepare.h"
 #include "holefill/stitch.h"
+#include "holefill/weld.h"
 
 namespace holefill::testing {
 namespace {
@@ -45,6 +47,23 @@ TEST(StitchCost, AToleranceFarAboveTheEdgesLeavesEveryEdgeApartAtOnce) {
   EXPECT_EQ(report.edges_left_apart, 0u);
   EXPECT_EQ(mesh.n_vertices(), static_cast<std::size_t>((kCells + 1) * (kCells + 1)));
   EXPECT_EQ(find_holes(mesh).size(), 1u);
+}
+
+// Welding looks at each boundary point's few nearest only: a tolerance far above the edges made
+// every point search every other (650 s for this grid through holefill info).
+TEST(StitchCost, WeldingAndTheWholePreparationStayLinearWhateverTheTolerance) {
+  constexpr int kCells = 173;
+  const Mesh grid = triangle_by_triangle_grid(kCells);
+  for (const double tolerance : {1e10, 1.0, 0.0}) {
+    SCOPED_TRACE(tolerance);
+    Mesh mesh = grid;
+    EXPECT_EQ(weld_touching_vertices(mesh, tolerance).positions, 0u);  // crowded, or one piece each
+    EXPECT_EQ(mesh.n_vertices(), grid.n_vertices());
+    PrepareOptions options;
+    options.stitch_options.tolerance = tolerance;
+    mesh = grid;
+    EXPECT_EQ(prepare_mesh(mesh, options).weld.positions, 0u);
+  }
 }
 
 }  // namespace
