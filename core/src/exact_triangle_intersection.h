@@ -1,11 +1,11 @@
 // The second, independent test of whether two triangles intersect, which joins the search's own
 // (triangle_intersection.h) when fill.cpp decides whether a patch may stay in the mesh ("do no
-// harm", patch_intersections.h's `exact_too`), so that a miss of either does not pass: GMP rationals on the
-// coordinates as stored, no tolerance, and a different method: each triangle's section by the
-// other's plane, compared along the planes' common line. Two triangles intersect when the interior
-// of one meets the other, closed; touching along sides or at corners does not count. A floating-
-// point filter with a certified error bound settles the pairs that one's plane clearly separates,
-// so that only the close calls pay for rationals.
+// harm", patch_intersections.h's `exact_too`), so that a miss of either does not pass: GMP
+// rationals on the coordinates as stored, no tolerance, and a different method: each triangle's
+// section by the other's plane, compared along the planes' common line. Two triangles intersect
+// when the interior of one meets the other, closed; touching along sides or at corners does not
+// count. A floating- point filter with a certified error bound settles the pairs that one's plane
+// clearly separates, so that only the close calls pay for rationals.
 #pragma once
 
 #include <array>

@@ -275,8 +275,7 @@ class HelperThreads {
   int count() const { return count_; }
 
  private:
-  static inline std::atomic<int> spare_{
-      static_cast<int>(available_cores()) - 1};
+  static inline std::atomic<int> spare_{static_cast<int>(available_cores()) - 1};
   int count_ = 0;
 };
 

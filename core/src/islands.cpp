@@ -12,9 +12,9 @@
 namespace holefill {
 namespace {
 
+using detail::cross2;
 using detail::OutlineGrid;
 using detail::Point2;
-using detail::cross2;
 
 // A loop touches another when it comes this close to it, in the surrounding edge length.
 constexpr double kTouchingFraction = 0.1;

@@ -10,7 +10,6 @@
 #include <stdexcept>
 
 #include "holefill/errors.h"
-#include "holefill/errors.h"
 #include "holefill/holes.h"
 #include "holefill/patch.h"
 #include "island_meshes.h"
