@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -131,15 +132,22 @@ template <bool kPrune, class Weight>
 class StripSolver {
  public:
   StripSolver(const HolePolygon& polygon, const Weight& weight, Tables& tables)
-      : polygon_(polygon), weight_(weight), t_(tables), first_within_bound_(fastest_bound_scan()) {}
+      : polygon_(polygon),
+        weight_(weight),
+        t_(tables),
+        // Sized for the tallest strip here, on the calling thread: solve_strip runs on helper
+        // threads, where an allocation that failed would end the process (nothing there can
+        // catch it and stop the strips waiting for this one).
+        strip_normals_(static_cast<std::size_t>(kStripRows) * static_cast<std::size_t>(tables.n)),
+        first_within_bound_(fastest_bound_scan()) {}
 
-  // Rows lowest ... highest (highest <= n - 3), column by column: cells (r, k) for r + 2 <= k,
-  // from the highest row down, once the rows below the strip have finished column k.
+  // Rows lowest ... highest (highest <= n - 3, at most kStripRows of them), column by column:
+  // cells (r, k) for r + 2 <= k, from the highest row down, once the rows below the strip have
+  // finished column k. Allocates nothing.
   void solve_strip(int lowest, int highest, RowWavefront& wavefront) {
     const int n = t_.n;
+    assert(highest - lowest + 1 <= kStripRows);
     strip_lowest_ = lowest;
-    strip_normals_.resize(static_cast<std::size_t>(highest - lowest + 1) *
-                          static_cast<std::size_t>(n));
     int below_finished = -1;
     const bool strip_below = highest + 1 <= n - 3;
     for (int k = lowest + 2; k < n; ++k) {

@@ -1,5 +1,7 @@
 // Running out of memory: a clear message, its own exit code, no output, wherever it happens.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <thread>
 
@@ -47,6 +49,32 @@ TEST(OutOfMemory, InAWorkerThreadReachesTheCallerWithTheMeshUnchanged) {
         std::_Exit(0);
       },
       ::testing::ExitedWithCode(kCaughtBadAlloc), "");
+}
+
+// A large hole's dynamic program on several threads: its helper threads, which nothing there
+// could catch a failure on, allocate nothing (an allocation there ended the process in
+// std::terminate when the machine was idle enough to give a hole's program a second thread).
+TEST(OutOfMemory, TheDynamicProgramsHelperThreadsAllocateNothing) {
+  const Mesh grid = testing::make_grid(41, [](double, double) { return 0.0; });
+  Mesh mesh = testing::without_faces(grid, [](const Point& centroid) {
+    return std::abs(centroid[0] - 0.5) < 0.25 && std::abs(centroid[1] - 0.5) < 0.25;
+  });
+  const auto holes = find_holes(mesh);
+  const auto inner = std::min_element(holes.begin(), holes.end(), [](const Hole& a, const Hole& b) {
+    return a.halfedges.size() < b.halfedges.size();
+  });
+  ASSERT_GE(inner->halfedges.size(), 64u);  // rows for several strips, one per thread
+  FillOptions options;
+  options.triangulate.threads = 4;
+  const std::size_t faces = mesh.n_faces();
+  EXPECT_EXIT(
+      {
+        testing::fail_allocations_off_this_thread();
+        const HoleFill fill = fill_hole(mesh, *inner, options);
+        testing::stop_failing_allocations();
+        std::_Exit(fill.failure.empty() && mesh.n_faces() > faces ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
 }
 
 using OutOfMemoryCli = ScratchTest;
