@@ -117,6 +117,8 @@ int run_fill(FillArguments& a, const Streams& streams) {
                          ? std::vector<HoleFill>{}
                          : fill_holes(mesh, holes, a.options, a.selection,
                                       progress ? &progress->progress() : nullptr);
+  const std::string unwelded = undo_unused_welds(mesh, prepared.weld);
+  if (!unwelded.empty()) streams.err << "holefill: " << a.input << ": " << unwelded << "\n";
   report.vertices_after = mesh.n_vertices();
   report.faces_after = mesh.n_faces();
   report.holes_after = find_holes(mesh).size();

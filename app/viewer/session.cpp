@@ -62,6 +62,7 @@ void Session::load(Mesh mesh, std::string name) {
 
 void Session::adopt(Mesh mesh, std::string name, PreparedMesh prepared) {
   name_ = std::move(name);
+  welds_ = prepared.weld;
   holes_ = std::move(prepared.holes);
   loaded_ = std::make_shared<const MeshState>(
       MeshState{std::move(mesh), std::vector<HoleFill>(holes_.size())});
@@ -85,9 +86,16 @@ void Session::adopt(Mesh mesh, std::string name, PreparedMesh prepared) {
 
 bool Session::save(const std::filesystem::path& path) {
   try {
-    save_mesh(mesh(), path);
+    std::string unwelded;
+    if (welds_.positions == 0) {
+      save_mesh(mesh(), path);
+    } else {  // the file gets the welds whose holes stayed open taken back, as the CLI writes it
+      Mesh copy = mesh();
+      unwelded = undo_unused_welds(copy, welds_);
+      save_mesh(copy, path);
+    }
     saved_revision_ = revision_;
-    std::string lost;
+    std::string lost = unwelded.empty() ? "" : "; " + unwelded;
     for (const auto& kind : attributes_not_written(mesh(), path)) lost += "; not written: " + kind;
     notice_ = {"Saved " + path.string() + lost, false};
     return true;

@@ -254,6 +254,7 @@ class Session {
   std::vector<Hole> holes_;
   std::vector<bool> borders_;   // per hole, from classify_loops
   std::vector<bool> fillable_;  // per hole: among the preparation's ids_to_fill (prepare.h)
+  WeldReport welds_;  // where the preparation welded touching holes (save() undoes unused welds)
   std::vector<FillStep> log_;
   Checkpoints checkpoints_;
   std::vector<Snapshot> undo_;

@@ -179,4 +179,12 @@ PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options) {
   return prepared;
 }
 
+std::string undo_unused_welds(Mesh& mesh, const WeldReport& welds) {
+  const std::size_t split = unweld_open_pinches(mesh, welds.welded_at);
+  if (split == 0) return {};
+  return "split " + std::to_string(split) + (split == 1 ? " vertex" : " vertices") +
+         " off the welded ones again: the holes that touch there stayed open, so the vertices "
+         "there are apart again, as in the file";
+}
+
 }  // namespace holefill

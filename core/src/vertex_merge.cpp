@@ -7,14 +7,8 @@
 
 namespace holefill::detail {
 
-bool merge_vertices(Mesh& mesh, const std::vector<int>& kept_of) {
-  std::vector<FaceHandle> faces;
-  std::vector<VertexHandle> merged;
-  for (const auto v : mesh.vertices()) {
-    if (kept_of[v.idx()] == v.idx()) continue;
-    merged.push_back(v);
-    for (const auto f : mesh.vf_range(v)) faces.push_back(f);
-  }
+bool move_corners(Mesh& mesh, std::vector<FaceHandle> faces, const CornerMap& corner_of,
+                  const std::vector<VertexHandle>& unused) {
   std::sort(faces.begin(), faces.end(),
             [](FaceHandle a, FaceHandle b) { return a.idx() > b.idx(); });
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
@@ -22,7 +16,7 @@ bool merge_vertices(Mesh& mesh, const std::vector<int>& kept_of) {
   const Mesh before = mesh;
   const DeletionFlags flags(mesh);  // after the copy: restoring it brings no flags back
   for (const auto f : faces) mesh.delete_face(f, false);
-  for (const auto v : merged) mesh.delete_vertex(v, false);
+  for (const auto v : unused) mesh.delete_vertex(v, false);
   const std::size_t edges_before = mesh.n_edges();
   for (const auto old_face : faces) {
     std::array<HalfedgeHandle, 3> old_halfedges;
@@ -30,7 +24,7 @@ bool merge_vertices(Mesh& mesh, const std::vector<int>& kept_of) {
     HalfedgeHandle h = before.halfedge_handle(old_face);
     for (int i = 0; i < 3; ++i, h = before.next_halfedge_handle(h)) {
       old_halfedges[i] = h;
-      corners[i] = VertexHandle(kept_of[before.from_vertex_handle(h).idx()]);
+      corners[i] = corner_of(old_face, before.from_vertex_handle(h));
     }
     const FaceHandle face = mesh.add_face(corners[0], corners[1], corners[2]);
     if (!face.is_valid()) {
@@ -55,6 +49,19 @@ bool merge_vertices(Mesh& mesh, const std::vector<int>& kept_of) {
   }
   mesh.garbage_collection();
   return true;
+}
+
+bool merge_vertices(Mesh& mesh, const std::vector<int>& kept_of) {
+  std::vector<FaceHandle> faces;
+  std::vector<VertexHandle> merged;
+  for (const auto v : mesh.vertices()) {
+    if (kept_of[v.idx()] == v.idx()) continue;
+    merged.push_back(v);
+    for (const auto f : mesh.vf_range(v)) faces.push_back(f);
+  }
+  return move_corners(
+      mesh, std::move(faces),
+      [&](FaceHandle, VertexHandle v) { return VertexHandle(kept_of[v.idx()]); }, merged);
 }
 
 }  // namespace holefill::detail

@@ -95,7 +95,66 @@ std::vector<std::vector<VertexHandle>> touching_groups(const Mesh& mesh, double 
   return result;
 }
 
+// The fans of faces around `v` (faces joined across the edges at v that have a face on both
+// sides), each in increasing face index, ordered by their lowest face.
+std::vector<std::vector<FaceHandle>> fans_around(const Mesh& mesh, VertexHandle v) {
+  std::vector<FaceHandle> faces;
+  for (const auto f : mesh.vf_range(v)) faces.push_back(f);
+  std::sort(faces.begin(), faces.end());
+  const auto position = [&](FaceHandle f) {
+    return static_cast<int>(std::lower_bound(faces.begin(), faces.end(), f) - faces.begin());
+  };
+  detail::VertexGroups joined(faces.size());
+  for (const auto h : mesh.voh_range(v)) {
+    const FaceHandle left = mesh.face_handle(h), right = mesh.opposite_face_handle(h);
+    if (left.is_valid() && right.is_valid()) joined.join(position(left), position(right));
+  }
+  std::map<int, std::vector<FaceHandle>> by_root;  // the root is the fan's lowest face
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    by_root[joined.root(static_cast<int>(i))].push_back(faces[i]);
+  }
+  std::vector<std::vector<FaceHandle>> fans;
+  for (auto& [root, fan] : by_root) fans.push_back(std::move(fan));
+  return fans;
+}
+
 }  // namespace
+
+std::size_t unweld_open_pinches(Mesh& mesh, const std::vector<Point>& welded_at) {
+  if (welded_at.empty()) return 0;
+  std::vector<VertexHandle> pinches;
+  for (const auto v : mesh.vertices()) {
+    if (!mesh.is_manifold(v) &&
+        std::find(welded_at.begin(), welded_at.end(), mesh.point(v)) != welded_at.end()) {
+      pinches.push_back(v);
+    }
+  }
+  if (pinches.empty()) return 0;
+  const Mesh before = mesh;
+  // (face, pinch vertex) -> the vertex that corner moves to
+  std::map<std::pair<int, int>, VertexHandle> moved;
+  std::vector<FaceHandle> faces;
+  std::size_t added = 0;
+  for (const auto v : pinches) {
+    const auto fans = fans_around(mesh, v);
+    for (std::size_t i = 1; i < fans.size(); ++i) {
+      const VertexHandle copy = mesh.add_vertex(mesh.point(v));
+      mesh.copy_all_properties(v, copy, true);
+      ++added;
+      for (const auto f : fans[i]) {
+        moved[{f.idx(), v.idx()}] = copy;
+        faces.push_back(f);
+      }
+    }
+  }
+  const bool moved_all = detail::move_corners(mesh, faces, [&](FaceHandle f, VertexHandle v) {
+    const auto found = moved.find({f.idx(), v.idx()});
+    return found == moved.end() ? v : found->second;
+  });
+  if (moved_all) return added;
+  mesh = before;  // OpenMesh refused a face (move_corners left the copies added above)
+  return 0;
+}
 
 bool has_touching_vertices(const Mesh& mesh, double tolerance) {
   return !touching_groups(mesh, tolerance).empty();

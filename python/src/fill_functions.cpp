@@ -83,6 +83,8 @@ py::object fill(MeshObject& object, py::object holes, py::object progress,
     const auto fills = a.selection.hole_ids.empty() ? std::vector<HoleFill>{}
                                                     : fill_holes(mesh, prepared.holes, a.options,
                                                                  a.selection, watcher.progress());
+    const std::string unwelded = undo_unused_welds(mesh, prepared.weld);
+    if (!unwelded.empty()) notes += object.name + ": " + unwelded + "\n";
     ++object.version;
     report.vertices_after = mesh.n_vertices();
     report.faces_after = mesh.n_faces();

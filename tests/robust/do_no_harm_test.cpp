@@ -4,6 +4,7 @@
 // reason. Each case is built here; intersections are judged by the tests' own brute-force exact
 // check (exact_intersections.h), not by the index the library uses.
 #include <algorithm>
+#include <array>
 #include <map>
 #include <set>
 
@@ -107,6 +108,51 @@ TEST_F(DoNoHarm, HolesTouchingAtASplitVertexAreWeldedAndBothClosed) {
         << run.err;
     EXPECT_TRUE(find_holes(load_mesh(path("out.obj"))).empty());
   }
+}
+
+// The corners' positions of every face, in order: what a file's faces say, whatever the indices.
+std::vector<std::array<Point, 3>> face_corners(const Mesh& mesh) {
+  std::vector<std::array<Point, 3>> corners;
+  for (const auto f : mesh.faces()) {
+    std::array<Point, 3>& corner = corners.emplace_back();
+    int i = 0;
+    for (const auto v : mesh.fv_range(f)) corner[i++] = mesh.point(v);
+  }
+  return corners;
+}
+
+TEST_F(DoNoHarm, AWeldWhoseHolesAllStayOpenIsTakenBackAndOneFilledHoleKeepsIt) {
+  Soup soup = sphere_soup(2);
+  touching_holes_at_a_split_vertex(soup, 7);
+  const auto file = write("touching.obj", obj_text(soup));
+  const Mesh loaded = load_mesh(file);
+  for (const std::size_t filled : {0, 1}) {
+    Mesh mesh = loaded;
+    const PreparedMesh prepared = prepare_mesh(mesh);
+    ASSERT_EQ(prepared.weld.positions, 1u);
+    ASSERT_EQ(prepared.holes.size(), 2u);
+    HoleSelection selection;
+    for (std::size_t i = 0; i < filled; ++i) selection.hole_ids.push_back(prepared.holes[i].id);
+    if (filled == 0) selection.max_boundary_edges = 2;  // no hole: both stay open
+    const auto fills = fill_holes(mesh, prepared.holes, {}, selection);
+    ASSERT_EQ(fills.size(), filled);
+    const std::string line = undo_unused_welds(mesh, prepared.weld);
+    for (const auto v : mesh.vertices()) EXPECT_TRUE(mesh.is_manifold(v)) << v.idx();
+    if (filled == 0) {  // the file's mesh again: its vertices apart, every face as it was
+      EXPECT_NE(line.find("split 1 vertex off the welded ones again"), std::string::npos) << line;
+      EXPECT_EQ(mesh.n_vertices(), loaded.n_vertices());
+      EXPECT_EQ(face_corners(mesh), face_corners(loaded));
+      EXPECT_EQ(find_holes(mesh).size(), 1u);
+    } else {  // the filled hole joined the two fans: the welded vertex is one fan, and stays
+      EXPECT_EQ(line, "");
+      EXPECT_EQ(mesh.n_vertices() - fills[0].patch.new_vertices.size(), loaded.n_vertices() - 1);
+    }
+  }
+  const CliRun run = run_cli({"fill", file.string(), "-o", path("out.obj"), "--max-boundary", "2"});
+  EXPECT_NE(run.err.find("split 1 vertex off the welded ones again"), std::string::npos) << run.err;
+  const Mesh written = load_mesh(path("out.obj"));
+  EXPECT_EQ(face_corners(written), face_corners(loaded));
+  for (const auto v : written.vertices()) EXPECT_TRUE(written.is_manifold(v)) << v.idx();
 }
 
 // A square sheet of two triangles with its lower left corner at `at`.

@@ -292,5 +292,31 @@ TEST(Session, SavesTheFilledMesh) {
   std::filesystem::remove(path);
 }
 
+// An octahedron without two faces at its top, whose two fans there have a vertex each at the top's
+// position: two holes touching at a vertex, as an exporter that splits vertices writes them.
+TEST(Session, SavesTheFileVerticesWhereAWeldsHolesStayedOpen) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto input = dir / "holefill_viewer_touching.obj";
+  std::ofstream(input) << "v 0 0 1\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nv 0 0 -1\nv 0 0 1\n"
+                          "f 1 3 4\nf 7 5 2\nf 6 3 2\nf 6 4 3\nf 6 5 4\nf 6 2 5\n";
+  const auto output = dir / "holefill_viewer_touching_out.obj";
+  for (const bool fill : {false, true}) {
+    Session session;
+    ASSERT_TRUE(session.open(input)) << session.notice().text;
+    ASSERT_EQ(session.holes().size(), 2u);  // welded: two triangles touching at the top
+    if (fill) {
+      ASSERT_TRUE(session.fill_all());
+    }
+    ASSERT_TRUE(session.save(output)) << session.notice().text;
+    const Mesh saved = load_mesh(output);
+    // Left open, the holes get the file's two top vertices back; filled, one vertex joins them.
+    EXPECT_EQ(saved.n_vertices(), fill ? 6u : 7u);
+    EXPECT_EQ(session.notice().text.find("split 1 vertex") != std::string::npos, !fill);
+    for (const auto v : saved.vertices()) EXPECT_TRUE(saved.is_manifold(v)) << v.idx();
+  }
+  std::filesystem::remove(input);
+  std::filesystem::remove(output);
+}
+
 }  // namespace
 }  // namespace holefill::viewer

@@ -54,4 +54,10 @@ struct PreparedMesh {
 // (stitch.h, weld.h, components.h say how); every face kept keeps its corners and properties.
 PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options = {});
 
+// After the fill of a prepared mesh: takes back the welds (PreparedMesh::weld) whose holes all
+// stayed open (weld.h's unweld_open_pinches), so that no pinch the file did not have is left in the
+// output. Returns the line that tells the user (no file name, no newline), empty when nothing
+// changed.
+std::string undo_unused_welds(Mesh& mesh, const WeldReport& welds);
+
 }  // namespace holefill

@@ -31,6 +31,14 @@ struct WeldReport {
 WeldReport weld_touching_vertices(Mesh& mesh, double tolerance,
                                   const std::vector<Point>& apart = {});
 
+// Takes back the welds whose holes stayed open: each vertex at one of `welded_at`'s positions
+// (WeldReport::welded_at) that is still a pinch, its faces in several fans with gaps between them,
+// becomes one vertex per fan again, each with the welded vertex's position and properties. The
+// fan with the lowest face index stays on the vertex; the others get new vertices at the end.
+// Face indices, corners' order and properties are kept. Returns the vertices added (0: the mesh is
+// untouched). Expects a mesh without deleted elements.
+std::size_t unweld_open_pinches(Mesh& mesh, const std::vector<Point>& welded_at);
+
 // Whether weld_touching_vertices would find any group to judge (a quick look, nothing changed).
 bool has_touching_vertices(const Mesh& mesh, double tolerance);
 
