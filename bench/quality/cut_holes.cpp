@@ -37,32 +37,9 @@ std::vector<double> edge_distances(const Mesh& mesh, VertexHandle source, double
   return distance;
 }
 
-// The removed faces around one seed, grown until the kept faces' border is a simple loop:
-// no kept face with two or more edges on the hole, no vertex whose kept faces form two fans.
-std::vector<char> disk_around(const Mesh& mesh, VertexHandle seed, double radius) {
-  const std::vector<double> distance = edge_distances(mesh, seed, 2.0 * radius);
-  std::vector<char> removed(mesh.n_faces(), 0);
-  // Only the edge-connected piece of the ball that contains the seed's faces.
-  std::vector<FaceHandle> stack;
-  auto inside = [&](FaceHandle f) {
-    double sum = 0.0;
-    for (const auto v : mesh.fv_range(f)) sum += distance[v.idx()];
-    return sum / 3.0 < radius;
-  };
-  for (const auto f : mesh.vf_range(seed)) {
-    removed[f.idx()] = 1;
-    stack.push_back(f);
-  }
-  while (!stack.empty()) {
-    const FaceHandle f = stack.back();
-    stack.pop_back();
-    for (const auto g : mesh.ff_range(f)) {
-      if (!removed[g.idx()] && inside(g)) {
-        removed[g.idx()] = 1;
-        stack.push_back(g);
-      }
-    }
-  }
+// Grows `removed` until the kept faces' border is a simple loop: no kept face with two or more
+// edges on the hole, no vertex whose kept faces form two fans.
+void clean_up(const Mesh& mesh, std::vector<char>& removed) {
   for (bool changed = true; changed;) {
     changed = false;
     for (const auto f : mesh.faces()) {
@@ -84,7 +61,42 @@ std::vector<char> disk_around(const Mesh& mesh, VertexHandle seed, double radius
       }
     }
   }
+}
+
+// The edge-connected piece of the faces for which `inside` holds that contains `start`, cleaned
+// up into a disk.
+std::vector<char> grow_disk(const Mesh& mesh, const std::vector<FaceHandle>& start,
+                            const std::function<bool(FaceHandle)>& inside) {
+  std::vector<char> removed(mesh.n_faces(), 0);
+  std::vector<FaceHandle> stack;
+  for (const auto f : start) {
+    removed[f.idx()] = 1;
+    stack.push_back(f);
+  }
+  while (!stack.empty()) {
+    const FaceHandle f = stack.back();
+    stack.pop_back();
+    for (const auto g : mesh.ff_range(f)) {
+      if (!removed[g.idx()] && inside(g)) {
+        removed[g.idx()] = 1;
+        stack.push_back(g);
+      }
+    }
+  }
+  clean_up(mesh, removed);
   return removed;
+}
+
+// The removed faces around one seed: centroids within `radius` along edges.
+std::vector<char> disk_around(const Mesh& mesh, VertexHandle seed, double radius) {
+  const std::vector<double> distance = edge_distances(mesh, seed, 2.0 * radius);
+  std::vector<FaceHandle> start;
+  for (const auto f : mesh.vf_range(seed)) start.push_back(f);
+  return grow_disk(mesh, start, [&](FaceHandle f) {
+    double sum = 0.0;
+    for (const auto v : mesh.fv_range(f)) sum += distance[v.idx()];
+    return sum / 3.0 < radius;
+  });
 }
 
 long euler_characteristic(const Mesh& mesh) {
@@ -105,6 +117,22 @@ std::optional<Mesh> without(const Mesh& closed, const std::vector<char>& removed
     if (!cut.add_face(corners).is_valid()) return std::nullopt;
   }
   return cut;
+}
+
+CutHole hole_of(const Mesh& closed, const std::vector<char>& disk, VertexHandle seed,
+                double radius) {
+  CutHole hole;
+  hole.seed = seed;
+  hole.radius = radius;
+  for (const auto f : closed.faces()) {
+    if (disk[f.idx()]) hole.removed_faces.push_back(f);
+  }
+  for (const auto v : closed.vertices()) {
+    bool all_removed = true;
+    for (const auto f : closed.vf_range(v)) all_removed = all_removed && disk[f.idx()];
+    if (all_removed) hole.inner_vertices.push_back(v);
+  }
+  return hole;
 }
 
 }  // namespace
@@ -148,17 +176,7 @@ std::optional<CutMesh> cut_holes(const Mesh& closed, const std::vector<double>& 
           euler_characteristic(*cut) == closed_euler - static_cast<long>(k + 1);
       if (!clean) continue;
 
-      CutHole hole;
-      hole.seed = candidate;
-      hole.radius = radius;
-      for (const auto f : closed.faces()) {
-        if (disk[f.idx()]) hole.removed_faces.push_back(f);
-      }
-      for (const auto v : closed.vertices()) {
-        bool all_removed = true;
-        for (const auto f : closed.vf_range(v)) all_removed = all_removed && disk[f.idx()];
-        if (all_removed) hole.inner_vertices.push_back(v);
-      }
+      CutHole hole = hole_of(closed, disk, candidate, radius);
       // Later holes keep two edge lengths of surface between themselves and this one.
       for (const auto f : hole.removed_faces) {
         for (const auto v : closed.fv_range(f)) {
@@ -182,6 +200,41 @@ std::optional<CutMesh> cut_holes(const Mesh& closed, const std::vector<double>& 
     }
   }
   if (radii.empty()) result.mesh = closed;
+  return result;
+}
+
+std::optional<CutMesh> cut_ball(const Mesh& closed, const Point& center, double radius,
+                                std::string* problem) {
+  auto centroid = [&](FaceHandle f) {
+    Point sum(0.0, 0.0, 0.0);
+    for (const auto v : closed.fv_range(f)) sum += closed.point(v);
+    return sum / 3.0;
+  };
+  FaceHandle nearest;
+  double nearest_distance = kInfinity;
+  for (const auto f : closed.faces()) {
+    const double d = (centroid(f) - center).norm();
+    if (d < nearest_distance) nearest_distance = d, nearest = f;
+  }
+  auto fail = [&](const std::string& why) -> std::optional<CutMesh> {
+    if (problem) *problem = why;
+    return std::nullopt;
+  };
+  if (!nearest.is_valid()) return fail("the mesh has no faces");
+  const std::vector<char> disk = grow_disk(
+      closed, {nearest}, [&](FaceHandle f) { return (centroid(f) - center).norm() < radius; });
+  auto cut = without(closed, disk);
+  if (!cut) return fail("the faces left would not be manifold");
+  const auto loops = find_holes(*cut);
+  if (loops.size() != 1 || loops[0].pinched ||
+      euler_characteristic(*cut) != euler_characteristic(closed) - 1) {
+    return fail("the cut is not one disk bounded by one simple loop (" +
+                std::to_string(loops.size()) + " loops)");
+  }
+  CutMesh result;
+  result.mesh = std::move(*cut);
+  result.holes.push_back(
+      hole_of(closed, disk, closed.from_vertex_handle(closed.halfedge_handle(nearest)), radius));
   return result;
 }
 

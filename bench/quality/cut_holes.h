@@ -32,6 +32,14 @@ struct CutMesh {
 std::optional<CutMesh> cut_holes(const Mesh& closed, const std::vector<double>& radii,
                                  unsigned seed, std::string* problem = nullptr);
 
+// Cuts one hole: the edge-connected faces whose centroid lies within `radius` (straight-line
+// distance) of `center`, grown from the face whose centroid is nearest, cleaned up into a disk
+// as cut_holes does; the hole's seed is a corner of that face. Holes across a mesh's creases and
+// corners are placed this way. Returns nothing, with `problem` set, when the cut is not one disk
+// bounded by one simple loop.
+std::optional<CutMesh> cut_ball(const Mesh& closed, const Point& center, double radius,
+                                std::string* problem = nullptr);
+
 // Mean edge length of a mesh.
 double mean_edge_length(const Mesh& mesh);
 

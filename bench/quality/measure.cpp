@@ -68,21 +68,29 @@ double maximum(const std::vector<double>& values) {
   return values.empty() ? kNaN : *std::max_element(values.begin(), values.end());
 }
 
+std::vector<FaceHandle> all_faces(const Mesh& mesh) {
+  std::vector<FaceHandle> faces;
+  for (const auto f : mesh.faces()) faces.push_back(f);
+  return faces;
+}
+
 }  // namespace
 
-Truth::Truth(const Mesh& closed) {
+Truth::Truth(const Mesh& closed) : Truth(closed, all_faces(closed)) {}
+
+Truth::Truth(const Mesh& mesh, const std::vector<FaceHandle>& faces) {
   Point low(std::numeric_limits<double>::infinity()), high(-low);
-  for (const auto v : closed.vertices()) {
-    low.minimize(closed.point(v));
-    high.maximize(closed.point(v));
+  for (const auto v : mesh.vertices()) {
+    low.minimize(mesh.point(v));
+    high.maximize(mesh.point(v));
   }
   diagonal_ = (high - low).norm();
-  for (const auto f : closed.faces()) {
-    auto fv = closed.cfv_iter(f);
+  for (const auto f : faces) {
+    auto fv = mesh.cfv_iter(f);
     Triangle t;
-    t.a = closed.point(*fv);
-    t.b = closed.point(*++fv);
-    t.c = closed.point(*++fv);
+    t.a = mesh.point(*fv);
+    t.b = mesh.point(*++fv);
+    t.c = mesh.point(*++fv);
     t.center = (t.a + t.b + t.c) / 3.0;
     t.radius =
         std::max({(t.a - t.center).norm(), (t.b - t.center).norm(), (t.c - t.center).norm()});
@@ -91,8 +99,14 @@ Truth::Truth(const Mesh& closed) {
 }
 
 double Truth::distance(const Point& p) const {
+  if (triangles_.empty()) return std::numeric_limits<double>::infinity();
+  return (p - nearest(p)).norm();
+}
+
+Point Truth::nearest(const Point& p) const {
   // Start from the triangle whose centre is nearest, then look only at triangles whose ball
   // could hold something nearer.
+  if (triangles_.empty()) return p;
   std::size_t start = 0;
   double nearest_center = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
@@ -100,10 +114,12 @@ double Truth::distance(const Point& p) const {
     if (d < nearest_center) nearest_center = d, start = i;
   }
   const Triangle& first = triangles_[start];
-  double best = (p - closest_on_triangle(p, first.a, first.b, first.c)).norm();
+  Point best = closest_on_triangle(p, first.a, first.b, first.c);
+  double best_distance = (p - best).norm();
   for (const auto& t : triangles_) {
-    if ((p - t.center).norm() - t.radius >= best) continue;
-    best = std::min(best, (p - closest_on_triangle(p, t.a, t.b, t.c)).norm());
+    if ((p - t.center).norm() - t.radius >= best_distance) continue;
+    const Point q = closest_on_triangle(p, t.a, t.b, t.c);
+    if ((p - q).norm() < best_distance) best = q, best_distance = (p - q).norm();
   }
   return best;
 }

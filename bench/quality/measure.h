@@ -22,8 +22,13 @@ struct FilledHole {
 class Truth {
  public:
   explicit Truth(const Mesh& closed);
-  // Distance from p to the nearest triangle of the closed mesh.
+  // Only the given faces of `mesh` (a patch: the distance from the truth to a fill); the
+  // diagonal is still the whole mesh's.
+  Truth(const Mesh& mesh, const std::vector<FaceHandle>& faces);
+  // Distance from p to the nearest triangle (infinite when there is none).
   double distance(const Point& p) const;
+  // The nearest point to p on those triangles (p itself when there are none).
+  Point nearest(const Point& p) const;
   double diagonal() const { return diagonal_; }
 
  private:

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_text.h"
 #include "cut_holes.h"
 #include "holefill/errors.h"
 #include "holefill/fill.h"
@@ -26,7 +27,7 @@
 #include "measure.h"
 #include "shapes.h"
 #ifdef HOLEFILL_QUALITY_WITH_CGAL
-#include "cgal_fill.h"
+#include "cgal_bridge.h"
 #endif
 
 namespace holefill::quality {
@@ -48,19 +49,6 @@ constexpr const char* kUsage = R"(usage: holefill-quality [options]
   --seed N             seed for the hole centres (default 1)
   --write DIR          also write every filled mesh there as OBJ
 )";
-
-struct UsageError {
-  std::string message;
-};
-
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> parts;
-  std::stringstream stream(text);
-  for (std::string part; std::getline(stream, part, ',');) {
-    if (!part.empty()) parts.push_back(part);
-  }
-  return parts;
-}
 
 struct Shape {
   std::string name;
@@ -115,13 +103,6 @@ std::optional<FillOptions> smoothing_options(std::string name) {
     if (options.smooth.fair.order == 2 || options.smooth.fair.order == 3) return options;
   }
   return std::nullopt;
-}
-
-std::string format(double value, int decimals) {
-  if (std::isnan(value)) return "–";
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
 }
 
 std::string hole_sizes(const std::vector<Hole>& holes) {
@@ -215,67 +196,6 @@ std::vector<FilledHole> truth_patches(const Mesh& closed, const CutMesh& cut,
   }
   return patches;
 }
-
-#ifdef HOLEFILL_QUALITY_WITH_CGAL
-// CGAL's filling of the same holes, read back into our mesh type.
-Mesh fill_with_cgal(const Mesh& cut, const std::vector<Hole>& loops,
-                    std::vector<FilledHole>& patches, std::size_t& unfaired) {
-  PlainMesh plain;
-  for (const auto v : cut.vertices()) {
-    const Point& p = cut.point(v);
-    plain.points.push_back({p[0], p[1], p[2]});
-  }
-  for (const auto f : cut.faces()) {
-    auto fv = cut.cfv_iter(f);
-    const int a = fv->idx(), b = (++fv)->idx(), c = (++fv)->idx();
-    plain.faces.push_back({a, b, c});
-  }
-  std::vector<std::array<int, 2>> hole_edges;
-  for (const auto& loop : loops) {
-    hole_edges.push_back({loop.vertices[0].idx(), loop.vertices[1].idx()});
-  }
-  const CgalFill filled = cgal_fill(plain, hole_edges);
-  Mesh mesh;
-  for (const auto& p : filled.mesh.points) mesh.add_vertex(Point(p[0], p[1], p[2]));
-  for (const auto& f : filled.mesh.faces) {
-    mesh.add_face(VertexHandle(f[0]), VertexHandle(f[1]), VertexHandle(f[2]));
-  }
-  for (std::size_t i = 0; i < loops.size(); ++i) {
-    FilledHole patch{loops[i].vertices, {}, {}};
-    for (const int f : filled.patches[i].faces) patch.faces.emplace_back(f);
-    for (const int v : filled.patches[i].new_vertices) patch.new_vertices.emplace_back(v);
-    unfaired += filled.patches[i].faired ? 0 : 1;
-    patches.push_back(std::move(patch));
-  }
-  return mesh;
-}
-
-// Our triangulation and refinement, then CGAL's fairing of the new vertices: tells whether a
-// difference to CGAL comes from the fairing or from the patch it starts from.
-bool fair_with_cgal(Mesh& mesh, const std::vector<FilledHole>& patches) {
-  PlainMesh plain;
-  for (const auto v : mesh.vertices()) {
-    const Point& p = mesh.point(v);
-    plain.points.push_back({p[0], p[1], p[2]});
-  }
-  for (const auto f : mesh.faces()) {
-    auto fv = mesh.cfv_iter(f);
-    const int a = fv->idx(), b = (++fv)->idx(), c = (++fv)->idx();
-    plain.faces.push_back({a, b, c});
-  }
-  bool all = true;
-  for (const auto& patch : patches) {
-    std::vector<int> vertices;
-    for (const auto v : patch.new_vertices) vertices.push_back(v.idx());
-    all = cgal_fair(plain, vertices) && all;
-  }
-  for (const auto v : mesh.vertices()) {
-    const auto& p = plain.points[v.idx()];
-    mesh.set_point(v, Point(p[0], p[1], p[2]));
-  }
-  return all;
-}
-#endif
 
 // What the command line asks for, with the defaults filled in.
 struct Arguments {
@@ -480,13 +400,6 @@ int run(int argc, char** argv) {
 }  // namespace holefill::quality
 
 int main(int argc, char** argv) {
-  try {
-    return holefill::quality::run(argc, argv);
-  } catch (const holefill::quality::UsageError& error) {
-    std::cerr << "holefill-quality: " << error.message << "\n" << holefill::quality::kUsage;
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "holefill-quality: " << error.what() << "\n";
-    return 1;
-  }
+  return holefill::quality::run_guarded("holefill-quality", holefill::quality::kUsage,
+                                        [&] { return holefill::quality::run(argc, argv); });
 }
