@@ -1,0 +1,136 @@
+// The CAD set of holefill-features: its meshes are closed, manifold and where their shapes say;
+// each case's hole is one simple loop across the features it names.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "cad_cases.h"
+#include "cad_shapes.h"
+#include "holefill/holes.h"
+#include "test_meshes.h"
+
+namespace holefill::features {
+namespace {
+
+double enclosed_volume(const Mesh& mesh) {
+  double six_volume = 0.0;
+  for (const auto f : mesh.faces()) {
+    auto fv = mesh.cfv_iter(f);
+    const Point a = mesh.point(*fv), b = mesh.point(*++fv), c = mesh.point(*++fv);
+    six_volume += OpenMesh::dot(a, OpenMesh::cross(b, c));
+  }
+  return six_volume / 6.0;
+}
+
+long euler(const Mesh& mesh) {
+  return static_cast<long>(mesh.n_vertices()) - static_cast<long>(mesh.n_edges()) +
+         static_cast<long>(mesh.n_faces());
+}
+
+// The distinct unit normals (rounded) of the cut-away faces: how many faces of the part the
+// hole spans.
+std::size_t normals_cut(const CadCase& c, const quality::CutMesh& cut) {
+  std::set<std::array<long, 3>> normals;
+  for (const auto f : cut.holes.front().removed_faces) {
+    const Point n = c.closed.calc_face_normal(f);
+    normals.insert({std::lround(n[0] * 100), std::lround(n[1] * 100), std::lround(n[2] * 100)});
+  }
+  return normals.size();
+}
+
+TEST(CadSet, MeshesAreClosedManifoldSpheres) {
+  for (const auto& c : generated_cases()) {
+    SCOPED_TRACE(c.name);
+    EXPECT_TRUE(testing::is_oriented_manifold(c.closed));
+    EXPECT_TRUE(find_holes(c.closed).empty());
+    EXPECT_EQ(euler(c.closed), 2);              // every vertex used, genus 0
+    EXPECT_GT(enclosed_volume(c.closed), 0.0);  // faces point outwards
+  }
+}
+
+TEST(CadSet, ShapesHaveTheirVolumes) {
+  EXPECT_NEAR(enclosed_volume(make_box(1.0, 16)), 8.0, 1e-9);
+  EXPECT_NEAR(enclosed_volume(make_step_block(8)), 3.0, 1e-9);
+  // The cylinder's sides are chords of its circle: the prism on the 64-gon, caps flat.
+  const double polygon = 0.5 * 64 * std::sin(2.0 * std::numbers::pi / 64);
+  EXPECT_NEAR(enclosed_volume(make_cylinder(1.0, 1.0, 64)), polygon * 2.0, 1e-9);
+  // The rounded box lies within the solid: box + slabs + quarter cylinders + a ball.
+  const double a = 0.7, r = 0.3;
+  const double solid = 8 * a * a * a + 6 * 4 * a * a * r + 3 * 2 * a * std::numbers::pi * r * r +
+                       4.0 / 3.0 * std::numbers::pi * r * r * r;
+  const double rounded = enclosed_volume(make_rounded_box(a, r, 12, 4));
+  EXPECT_LT(rounded, solid);
+  EXPECT_GT(rounded, 0.99 * solid);
+}
+
+TEST(CadSet, RoundedBoxPointsLieOnTheFillets) {
+  const double a = 0.7, r = 0.3;
+  const Mesh mesh = make_rounded_box(a, r, 12, 4);
+  for (const auto v : mesh.vertices()) {
+    const Point p = mesh.point(v);
+    Point nearest;
+    for (int axis = 0; axis < 3; ++axis) nearest[axis] = std::clamp(p[axis], -a, a);
+    EXPECT_NEAR((p - nearest).norm(), r, 1e-12);
+  }
+}
+
+TEST(CadSet, EachCutIsOneSimpleLoopAcrossItsFeatures) {
+  for (const auto& c : generated_cases()) {
+    SCOPED_TRACE(c.name);
+    const auto cut = cut_case(c);
+    ASSERT_TRUE(cut.has_value());
+    const auto loops = find_holes(cut->mesh);
+    ASSERT_EQ(loops.size(), 1u);
+    EXPECT_FALSE(loops[0].pinched);
+    EXPECT_EQ(loops[0].repeated_vertices, 0u);
+    EXPECT_TRUE(testing::is_oriented_manifold(cut->mesh));
+    EXPECT_GT(cut->holes.front().removed_faces.size(), 20u);
+  }
+  // The holes span the faces they are meant to: one plane, two across an edge, three at a corner.
+  auto planes = [](const std::string& name) {
+    for (const auto& c : generated_cases()) {
+      if (c.name == name) return normals_cut(c, *cut_case(c));
+    }
+    return std::size_t{0};
+  };
+  EXPECT_EQ(planes("box-face"), 1u);
+  EXPECT_EQ(planes("box-edge"), 2u);
+  EXPECT_EQ(planes("box-corner"), 3u);
+  EXPECT_EQ(planes("step-concave"), 2u);
+  EXPECT_EQ(planes("step-corner"), 3u);
+  EXPECT_EQ(planes("step-mixed"), 3u);
+}
+
+TEST(CadSet, SplittingLongEdgesKeepsTheSurface) {
+  Mesh mesh = make_box(1.0, 2);  // edges of 1 and sqrt(2)
+  split_long_edges(mesh, 0.3);
+  for (const auto e : mesh.edges()) EXPECT_LE(mesh.calc_edge_length(e), 0.3);
+  EXPECT_TRUE(testing::is_oriented_manifold(mesh));
+  EXPECT_NEAR(enclosed_volume(mesh), 8.0, 1e-9);
+  for (const auto v : mesh.vertices()) {
+    const Point p = mesh.point(v);
+    EXPECT_NEAR(std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])}), 1.0, 1e-12);
+  }
+}
+
+TEST(CadSet, RealCasesFindACreaseAndACorner) {
+  const Mesh box = make_box(1.0, 8);
+  const auto cases = real_cases("box", box, 30.0, 3.0, 1);
+  ASSERT_EQ(cases.size(), 2u);
+  EXPECT_EQ(cases[0].name, "box-crease");
+  EXPECT_EQ(cases[1].name, "box-corner");
+  // A crease vertex has two coordinates at +-1, a corner vertex three.
+  auto on_faces = [](const Point& p) {
+    int n = 0;
+    for (int axis = 0; axis < 3; ++axis) n += std::abs(std::abs(p[axis]) - 1.0) < 1e-12;
+    return n;
+  };
+  EXPECT_EQ(on_faces(cases[0].center), 2);
+  EXPECT_EQ(on_faces(cases[1].center), 3);
+  for (const auto& c : cases) EXPECT_TRUE(cut_case(c).has_value());
+}
+
+}  // namespace
+}  // namespace holefill::features
