@@ -44,7 +44,10 @@ FillCounts report_problems(const std::vector<HoleFill>& fills, const std::string
       err << prefix << fill.hole_id << ": " << fill.attributes_note << "\n";
     if (!fill.islands_note.empty())
       err << prefix << fill.hole_id << ": " << fill.islands_note << "\n";
-    if (fill.failed()) err << prefix << fill.hole_id << " not filled: " << fill.failure << "\n";
+    if (fill.failed()) {
+      err << prefix << fill.hole_id << " not filled: " << fill.failure
+          << (fill.refused_intersections ? "; --allow-intersections keeps it" : "") << "\n";
+    }
   }
   return counts;
 }

@@ -47,7 +47,10 @@ void take_sort_order(HoleView& view) {
 
 // Why a hole failed or stays open, or that it is a border; empty for a plain hole.
 std::string why_open(const Session& session, const HoleRow& row) {
-  if (!row.failure.empty()) return "Hole " + std::to_string(row.id) + ": " + row.failure;
+  if (!row.failure.empty()) {
+    return "Hole " + std::to_string(row.id) + ": " + row.failure +
+           (row.refused_intersections ? "; \"keep cutting patches\" keeps it" : "");
+  }
   if (session.is_border(row.id) && row.status == HoleStatus::Open)
     return "Loop " + std::to_string(row.id) +
            " looks like the border of an open surface: Fill all leaves it, Fill closes it";

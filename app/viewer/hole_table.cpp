@@ -63,6 +63,7 @@ std::vector<HoleRow> hole_rows(const Session& session) {
     }
     row.intersecting = fill.self_intersections > 0;
     row.failure = fill.failed() ? fill.failure : session.islands().note[hole.id];
+    row.refused_intersections = fill.refused_intersections > 0;
     rows.push_back(std::move(row));
   }
   return rows;

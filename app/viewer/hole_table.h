@@ -23,6 +23,7 @@ struct HoleRow {
   std::string stage;
   bool intersecting = false;  // the patch intersects the mesh
   std::string failure;        // why it failed or cannot be filled with its islands, for the tooltip
+  bool refused_intersections = false;  // left open because every patch tried cut the mesh
 };
 
 enum class HoleColumn { Id, Edges, Perimeter, Area, Status };

@@ -78,10 +78,10 @@ void histogram(const char* id, const std::map<int, std::size_t>& valences, float
 // The selected hole's patch: its stage on the heading line (the stage times on hover), then its
 // measures and the valences of its new vertices.
 void patch_statistics(int hole_id, const HoleFill& fill, bool log_valences) {
-  if (fill.failed()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
-    ImGui::TextWrapped("Hole %d failed: %s", hole_id, fill.failure.c_str());
-    ImGui::PopStyleColor();
+  if (fill.failed()) {  // why is said under the hole list
+    ImGui::Text("Hole %d:", hole_id);
+    ImGui::SameLine();
+    ImGui::TextDisabled("not filled");
     return;
   }
   if (fill.stage() == Stage::Original) {
@@ -192,6 +192,11 @@ void options_section(Session& session, Worker& worker, UiState& ui) {
   tooltip(
       "After refinement: valence-driven flips and tangential relaxation of the patch (not in "
       "the paper)");
+  ImGui::SameLine();
+  changed |= ImGui::Checkbox("keep cutting patches", &options.allow_intersections);
+  tooltip(
+      "Off (the default): a hole whose every patch tried intersects the mesh is left open. On: "
+      "its best patch is kept anyway, its intersections counted and shown");
   // 0: umbrella; 1, 2: fairing of order 2 (bi-Laplacian) or 3 (tri-Laplacian).
   const bool fair = options.smooth.method == SmoothMethod::Fair;
   int method = fair ? options.smooth.fair.order - 1 : 0;

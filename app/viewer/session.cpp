@@ -231,6 +231,18 @@ std::optional<FillResult> Session::compute(const FillRequest& request, Progress*
       result.mesh_changed = result.mesh_changed || ran;
       if (!ran || request.one_stage) break;
     }
+    if (fill.failed() && !request.one_stage) {
+      // The stages a refused fill did not reach keep their place in the log, so that an option
+      // change ("keep cutting patches") replays the whole fill, not only the refused stage.
+      const auto logged = std::count_if(result.log.begin(), result.log.end(),
+                                        [id](const FillStep& step) { return step.hole_id == id; });
+      for (auto stage = logged; stage < static_cast<int>(request.options.last_stage); ++stage) {
+        const auto joined = request.joined.find(id);
+        result.log.push_back(
+            make_step(id, joined == request.joined.end() ? std::vector<int>{} : joined->second,
+                      request.options));
+      }
+    }
     if (fill.failed()) {
       result.all_ran = false;
       result.notice = {"Hole " + std::to_string(id) + ": " + fill.failure, true};

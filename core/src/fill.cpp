@@ -226,8 +226,7 @@ bool may_stay(Mesh& mesh, HoleFill& fill, const FillOptions& options,
   fill.self_intersections = 0;
   fill.refused_intersections = pairs;
   fill.failure = "every patch tried intersects the mesh (the best in " + std::to_string(pairs) +
-                 (pairs == 1 ? " pair" : " pairs") +
-                 " of triangles), so it is left open; --allow-intersections keeps it";
+                 (pairs == 1 ? " pair" : " pairs") + " of triangles), so it is left open";
   return false;
 }
 

@@ -144,6 +144,8 @@ TEST(PatchIntersections, TheCliLeavesTheHoleOpenAndExitsWithOneUnlessAllowed) {
   EXPECT_NE(refused.err.find("hole 1 not filled: every patch tried intersects the mesh"),
             std::string::npos)
       << refused.err;
+  EXPECT_NE(refused.err.find("left open; --allow-intersections keeps it"), std::string::npos)
+      << refused.err;
   EXPECT_EQ(load_mesh(dir / "out.obj").n_faces(), load_mesh(dir / "pin.obj").n_faces());
   const std::string refused_json = read_file(dir / "report.json");
   EXPECT_NE(refused_json.find("\"refused_intersections\": "), std::string::npos) << refused_json;

@@ -270,6 +270,31 @@ TEST(Session, FillAllLeavesOpenABorderEveryCapOfWhichCutsTheSurfaceAsTheCliDoes)
   EXPECT_EQ(session.fill(1).stage(), Stage::Smoothed);
   EXPECT_NE(session.notice().text.find("1 refused"), std::string::npos) << session.notice().text;
   EXPECT_FALSE(session.fill_all_request());
+  {  // the panel's "keep cutting patches" on the selected border: its best patch, counted
+    Session keeping;
+    ASSERT_TRUE(keeping.open(file));
+    keeping.select(0);
+    FillOptions keep = keeping.options();
+    keep.allow_intersections = true;
+    keeping.set_options(keep);
+    ASSERT_TRUE(keeping.fill_selected());
+    EXPECT_FALSE(keeping.fill(0).failed()) << keeping.fill(0).failure;
+    EXPECT_GT(keeping.fill(0).self_intersections, 0u);
+    EXPECT_EQ(keeping.fill(0).stage(), Stage::Smoothed);
+  }
+  {  // ticked after the refusal: the fill is run again to its end with the option
+    Session ticked;
+    ASSERT_TRUE(ticked.open(file));
+    ticked.select(0);
+    EXPECT_FALSE(ticked.fill_selected());
+    ASSERT_TRUE(ticked.fill(0).failed());
+    FillOptions keep = ticked.options();
+    keep.allow_intersections = true;
+    ticked.set_options(keep);
+    EXPECT_FALSE(ticked.fill(0).failed()) << ticked.fill(0).failure;
+    EXPECT_EQ(ticked.fill(0).stage(), Stage::Smoothed);
+    EXPECT_GT(ticked.fill(0).self_intersections, 0u);
+  }
   // The command-line tool writes the same mesh.
   Mesh cli = load_mesh(file);
   const PreparedMesh prepared = prepare_mesh(cli);
