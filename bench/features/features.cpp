@@ -24,6 +24,7 @@
 #include "holefill/holes.h"
 #include "holefill/io.h"
 #include "holefill/prepare.h"
+#include "island_meshes.h"
 #include "test_meshes.h"
 #ifdef HOLEFILL_QUALITY_WITH_CGAL
 #include "cgal_bridge.h"
@@ -191,7 +192,11 @@ int run(int argc, char** argv) {
       std::cerr << "holefill-features: " << c.name << ": " << problem << "\n";
       continue;
     }
-    if (a.write_dir) save_mesh(cut->mesh, *a.write_dir / (c.name + "-cut.obj"));
+    if (a.write_dir) {
+      // Without the hole's unused vertices: the file opens as a mesh with one hole, nothing else.
+      save_mesh(testing::without_isolated_vertices(cut->mesh),
+                *a.write_dir / (c.name + "-cut.obj"));
+    }
     const quality::Truth truth(c.closed);
     for (const auto& recipe : a.recipes)
       rows.push_back(fill_and_measure(c, *cut, truth, recipe, a));
