@@ -1,5 +1,6 @@
 // The CAD set of holefill-features: its meshes are closed, manifold and where their shapes say;
-// each case's hole is one simple loop across the features it names.
+// each case's hole is one simple loop across the features it names; the measures give the truth
+// its own crease and bound a crease moved by a known distance.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 
 #include "cad_cases.h"
 #include "cad_shapes.h"
+#include "crease_measure.h"
 #include "holefill/holes.h"
 #include "test_meshes.h"
 
@@ -130,6 +132,68 @@ TEST(CadSet, RealCasesFindACreaseAndACorner) {
   EXPECT_EQ(on_faces(cases[0].center), 2);
   EXPECT_EQ(on_faces(cases[1].center), 3);
   for (const auto& c : cases) EXPECT_TRUE(cut_case(c).has_value());
+}
+
+CadCase case_named(const std::string& name) {
+  for (auto& c : generated_cases()) {
+    if (c.name == name) return c;
+  }
+  throw std::invalid_argument(name);
+}
+
+// The cut-away faces themselves as the fill, in the closed mesh, with the hole's loop.
+quality::FilledHole truth_patch(const quality::CutMesh& cut) {
+  const auto& hole = cut.holes.front();
+  return {find_holes(cut.mesh).front().vertices, hole.removed_faces, hole.inner_vertices};
+}
+
+TEST(CreaseMeasure, TheTruthCoversItselfAndKeepsItsCrease) {
+  const CadCase c = case_named("box-edge");
+  const auto cut = cut_case(c);
+  ASSERT_TRUE(cut);
+  const quality::Truth truth(c.closed);
+  const auto q =
+      measure_feature_fill(c.closed, truth, cut->holes.front(), c.closed, truth_patch(*cut), true);
+  EXPECT_NEAR(q.cover_max, 0.0, 1e-12);
+  EXPECT_NEAR(q.patch.max_distance, 0.0, 1e-12);
+  ASSERT_GT(q.crease_samples, 0u);
+  EXPECT_NEAR(q.crease_max, 0.0, 1e-12);
+  EXPECT_NEAR(q.crease_dihedral, 90.0, 1e-9);
+  EXPECT_NEAR(q.truth_dihedral, 90.0, 1e-9);
+  EXPECT_TRUE(q.manifold);
+  EXPECT_TRUE(q.closed);
+  EXPECT_EQ(q.intersections, 0u);
+}
+
+TEST(CreaseMeasure, ACreasePushedInIsMissedByNoMoreThanThePush) {
+  // The box's edge x = z = 1 inside the hole moved a distance `push` toward the box's axis: the
+  // fill is bevelled there, the true crease lies at most `push` from it, the cover as well, and
+  // the angle at the moved crease is no longer the truth's.
+  const CadCase c = case_named("box-edge");
+  const auto cut = cut_case(c);
+  ASSERT_TRUE(cut);
+  Mesh pushed = c.closed;
+  const double push = 0.05;
+  const Point inward = Point(-1.0, 0.0, -1.0).normalized();
+  std::size_t moved = 0;
+  for (const auto v : cut->holes.front().inner_vertices) {
+    const Point p = pushed.point(v);
+    if (std::abs(p[0] - 1.0) < 1e-12 && std::abs(p[2] - 1.0) < 1e-12) {
+      pushed.set_point(v, p + inward * push);
+      ++moved;
+    }
+  }
+  ASSERT_GE(moved, 3u);
+  const quality::Truth truth(c.closed);
+  const auto q =
+      measure_feature_fill(c.closed, truth, cut->holes.front(), pushed, truth_patch(*cut), false);
+  const double diagonal = truth.diagonal();
+  EXPECT_GT(q.crease_mean, 0.1 * push / diagonal);
+  EXPECT_LE(q.crease_max, push / diagonal + 1e-12);
+  EXPECT_LE(q.cover_max, push / diagonal + 1e-12);
+  EXPECT_GT(q.cover_mean, 0.0);
+  EXPECT_LT(q.crease_dihedral, 89.0);
+  EXPECT_NEAR(q.truth_dihedral, 90.0, 1e-9);
 }
 
 }  // namespace
