@@ -13,6 +13,7 @@
 #include "dp_step.h"
 #include "geometry.h"
 #include "hole_triangulation.h"
+#include "loop_tree.h"
 
 namespace holefill {
 namespace {
@@ -70,11 +71,64 @@ struct Candidate {
   WeightValue value;
 };
 
+// The chords of a triangulation of the joined polygon that join the same two vertices as another
+// of its chords or edges (from two copies of a bridge's end to one vertex), as (i, k), i < k.
+std::vector<std::pair<int, int>> repeated_chords(const Hole& joined,
+                                                 const std::vector<std::array<int, 3>>& triangles) {
+  const int n = static_cast<int>(joined.vertices.size());
+  std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> sides_of_pair;
+  for (const auto& t : triangles) {
+    for (int e = 0; e < 3; ++e) {
+      const int low = std::min(t[e], t[(e + 1) % 3]), high = std::max(t[e], t[(e + 1) % 3]);
+      const auto u = static_cast<std::uint32_t>(joined.vertices[low].idx());
+      const auto v = static_cast<std::uint32_t>(joined.vertices[high].idx());
+      auto& sides = sides_of_pair[std::uint64_t{std::min(u, v)} << 32 | std::max(u, v)];
+      if (std::find(sides.begin(), sides.end(), std::pair(low, high)) == sides.end()) {
+        sides.emplace_back(low, high);
+      }
+    }
+  }
+  std::vector<std::pair<int, int>> repeated;
+  for (const auto& [pair, sides] : sides_of_pair) {
+    if (sides.size() < 2) continue;
+    for (const auto& [low, high] : sides) {
+      if (high - low != 1 && high - low != n - 1) repeated.emplace_back(low, high);
+    }
+  }
+  std::sort(repeated.begin(), repeated.end());
+  return repeated;
+}
+
+// Triangulations of a tree's polygon made again at most this many times, each with the chords
+// that repeated an edge forbidden.
+constexpr int kTreeRepairs = 8;
+
+// The joined polygon's triangulation and what the weight makes of it. A triangulation that uses
+// an edge twice is no patch. For a polygon joined along a tree (`along_tree`), which has only
+// this one chance, chords that leave a bridge end's corner are forbidden first, and a
+// triangulation that still repeats an edge is made again without the repeated chords,
+// kTreeRepairs times at most; otherwise the candidate has none.
 Candidate triangulate_candidate(const Mesh& mesh, Hole joined, Bridges bridges,
-                                const TriangulateOptions& options) {
+                                const TriangulateOptions& options, bool along_tree = false) {
   Candidate candidate{std::move(joined), std::move(bridges), std::nullopt, {}};
-  const HolePolygon polygon = joined_hole_polygon(mesh, candidate.joined, candidate.bridges);
-  auto triangulation = triangulate_polygon(polygon, options);
+  HolePolygon polygon = joined_hole_polygon(mesh, candidate.joined, candidate.bridges);
+  const int repairs = along_tree ? kTreeRepairs : 0;
+  if (along_tree) {
+    const auto outside = detail::chords_outside_corners(candidate.joined, polygon.points,
+                                                        2 * options.restricted.nearest_neighbours,
+                                                        options.restricted.pocket_edges);
+    polygon.forbidden_chords.insert(polygon.forbidden_chords.end(), outside.begin(), outside.end());
+  }
+  std::optional<PolygonTriangulation> triangulation;
+  for (int round = 0; round <= repairs; ++round) {
+    triangulation = triangulate_polygon(polygon, options);
+    if (!triangulation) return candidate;
+    const auto repeated = repeated_chords(candidate.joined, triangulation->triangles);
+    if (repeated.empty()) break;
+    polygon.forbidden_chords.insert(polygon.forbidden_chords.end(), repeated.begin(),
+                                    repeated.end());
+    triangulation.reset();
+  }
   if (!triangulation || !is_manifold_triangulation(candidate.joined, triangulation->triangles)) {
     return candidate;
   }
@@ -128,6 +182,13 @@ double loop_distance(const Mesh& mesh, const Hole& a, const Hole& b) {
 // or empty.
 std::string loops_problem(const std::vector<const Hole*>& loops) {
   if (loops.size() < 2) return "joining needs at least two boundary loops";
+  if (loops.size() > kMostJoinedLoops) {
+    return "it holds " + std::to_string(loops.size() - 1) +
+           " other loops (islands, a bridged hole), more than the " +
+           std::to_string(kMostJoinedLoops - 1) +
+           " one patch joins (kMostJoinedLoops in bridge.h); --islands off fills each loop on its "
+           "own";
+  }
   std::unordered_map<int, int> loop_of_vertex;
   for (const Hole* loop : loops) {
     for (const auto v : loop->vertices) {
@@ -194,6 +255,73 @@ bool is_manifold_triangulation(const Hole& polygon,
   return true;
 }
 
+namespace {
+
+// Whether plan_joined_loops weighs candidate bridges (JoinOptions::weighed_loops).
+bool weighs_bridges(const std::vector<const Hole*>& loops, const TriangulateOptions& options,
+                    const JoinOptions& join) {
+  std::size_t edges = 0;
+  for (const Hole* loop : loops) edges += loop->size() + 2;
+  return loops.size() <= static_cast<std::size_t>(std::max(join.weighed_loops, 0)) + 1 &&
+         edges <= options.restricted.above_edges;
+}
+
+// Joins the loops one by one, each by the best of its candidate bridges; false (and the failure
+// in result.plan) when a loop has none that triangulates.
+bool join_weighing_bridges(const Mesh& mesh, const std::vector<const Hole*>& loops,
+                           const TriangulateOptions& options, const JoinOptions& join,
+                           JoinedLoops& result) {
+  std::vector<const Hole*> waiting(loops.begin() + 1, loops.end());
+  while (!waiting.empty()) {
+    auto nearest = std::min_element(waiting.begin(), waiting.end(), [&](auto* a, auto* b) {
+      return loop_distance(mesh, result.polygon, *a) < loop_distance(mesh, result.polygon, *b);
+    });
+    const Hole& loop = **nearest;
+    std::optional<Candidate> best;
+    for (const auto& [i, j] :
+         candidate_bridges(mesh, result.polygon, loop, join.candidate_bridges)) {
+      Bridges bridges = result.bridges;
+      bridges.emplace_back(result.polygon.vertices[i], loop.vertices[j]);
+      Candidate candidate = triangulate_candidate(mesh, splice_loop(result.polygon, loop, i, j),
+                                                  std::move(bridges), options);
+      if (candidate.triangulation && (!best || candidate.value < best->value)) {
+        best = std::move(candidate);
+      }
+    }
+    if (!best) {
+      result.plan.failure = "no bridge from hole " + std::to_string(loop.id) + " to hole " +
+                            std::to_string(result.polygon.id) +
+                            " gives a valid triangulation of the region between them";
+      return false;
+    }
+    result.polygon = std::move(best->joined);
+    result.bridges = std::move(best->bridges);
+    result.plan.triangulation = std::move(best->triangulation);
+    waiting.erase(nearest);
+  }
+  return true;
+}
+
+// Joins the loops along a tree of shortest bridges (loop_tree.h) and triangulates once.
+bool join_along_shortest_bridges(const Mesh& mesh, const std::vector<const Hole*>& loops,
+                                 const TriangulateOptions& options, JoinedLoops& result) {
+  detail::LoopTree tree = detail::join_along_tree(mesh, loops);
+  Candidate joined =
+      triangulate_candidate(mesh, std::move(tree.polygon), std::move(tree.bridges), options, true);
+  result.polygon = std::move(joined.joined);
+  result.bridges = std::move(joined.bridges);
+  if (!joined.triangulation) {
+    result.plan.failure = "the " + std::to_string(loops.size()) + " loops joined to hole " +
+                          std::to_string(result.polygon.id) +
+                          " by their shortest bridges have no valid triangulation";
+    return false;
+  }
+  result.plan.triangulation = std::move(joined.triangulation);
+  return true;
+}
+
+}  // namespace
+
 JoinedLoops plan_joined_loops(const Mesh& mesh, const std::vector<const Hole*>& loops,
                               const TriangulateOptions& options, const JoinOptions& join) {
   JoinedLoops result;
@@ -202,35 +330,11 @@ JoinedLoops plan_joined_loops(const Mesh& mesh, const std::vector<const Hole*>& 
     result.plan.failure = problem;
     return result;
   }
-  std::vector<const Hole*> waiting(loops.begin() + 1, loops.end());
   try {
-    while (!waiting.empty()) {
-      auto nearest = std::min_element(waiting.begin(), waiting.end(), [&](auto* a, auto* b) {
-        return loop_distance(mesh, result.polygon, *a) < loop_distance(mesh, result.polygon, *b);
-      });
-      const Hole& loop = **nearest;
-      std::optional<Candidate> best;
-      for (const auto& [i, j] :
-           candidate_bridges(mesh, result.polygon, loop, join.candidate_bridges)) {
-        Bridges bridges = result.bridges;
-        bridges.emplace_back(result.polygon.vertices[i], loop.vertices[j]);
-        Candidate candidate = triangulate_candidate(mesh, splice_loop(result.polygon, loop, i, j),
-                                                    std::move(bridges), options);
-        if (candidate.triangulation && (!best || candidate.value < best->value)) {
-          best = std::move(candidate);
-        }
-      }
-      if (!best) {
-        result.plan.failure = "no bridge from hole " + std::to_string(loop.id) + " to hole " +
-                              std::to_string(result.polygon.id) +
-                              " gives a valid triangulation of the region between them";
-        return result;
-      }
-      result.polygon = std::move(best->joined);
-      result.bridges = std::move(best->bridges);
-      result.plan.triangulation = std::move(best->triangulation);
-      waiting.erase(nearest);
-    }
+    const bool joined = weighs_bridges(loops, options, join)
+                            ? join_weighing_bridges(mesh, loops, options, join, result)
+                            : join_along_shortest_bridges(mesh, loops, options, result);
+    if (!joined) return result;
   } catch (const std::bad_alloc&) {
     result.plan.triangulation.reset();
     result.plan.failure = "not enough memory to triangulate the joined loops";

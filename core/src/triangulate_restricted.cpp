@@ -6,8 +6,9 @@
 // every chord among the few of the last level, and chords to each vertex's nearest boundary
 // neighbours in space. A valid triangulation always exists in this set (triangulate the last
 // level's polygon, then each stretch between two anchors inside its pocket, level by level down),
-// unless chords that already exist in the mesh forbid it; then the caller falls back to the full
-// search.
+// unless forbidden chords (chords that already exist in the mesh, copies of a bridge's ends) take
+// it away: then the search runs once more with the anchors moved off the ends of forbidden chords,
+// and when that finds nothing either the caller falls back to the full search.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -35,7 +36,11 @@ struct ChordSet {
   }
 };
 
-ChordSet allowed_chords(const HolePolygon& polygon, const RestrictedSearch& search) {
+// With `avoid` given, each anchor is the first vertex from every step-th one on that `avoid` does
+// not mark (or that vertex when all of the step's are marked): the next anchor then still lies in
+// the pocket from the last one.
+ChordSet allowed_chords(const HolePolygon& polygon, const RestrictedSearch& search,
+                        const std::vector<char>* avoid = nullptr) {
   const int n = static_cast<int>(polygon.points.size());
   const int pocket = std::max(4, std::min(search.pocket_edges, n));
   const int step = std::max(2, pocket / 2);
@@ -56,7 +61,13 @@ ChordSet allowed_chords(const HolePolygon& polygon, const RestrictedSearch& sear
       }
     }
     std::vector<int> anchors;
-    for (int a = 0; a < size; a += step) anchors.push_back(level[a]);
+    for (int a = 0; a < size; a += step) {
+      int anchor = a;
+      while (avoid && a > 0 && (*avoid)[level[anchor]] && anchor + 1 < std::min(a + step, size)) {
+        ++anchor;
+      }
+      anchors.push_back(level[avoid && (*avoid)[level[anchor]] ? a : anchor]);
+    }
     if (anchors.back() != level.back()) anchors.push_back(level.back());
     level = std::move(anchors);
   }
@@ -77,10 +88,11 @@ constexpr std::size_t kChordsBetweenCancelChecks = 4096;
 template <class Weight>
 std::optional<PolygonTriangulation> solve_restricted(const HolePolygon& polygon,
                                                      const Weight& weight,
-                                                     const TriangulateOptions& options) {
+                                                     const TriangulateOptions& options,
+                                                     const std::vector<char>* avoid) {
   const auto& p = polygon.points;
   const int n = static_cast<int>(p.size());
-  ChordSet set = allowed_chords(polygon, options.restricted);
+  ChordSet set = allowed_chords(polygon, options.restricted, avoid);
   std::unordered_set<std::uint64_t> forbidden;
   for (const auto& [a, b] : polygon.forbidden_chords) {
     forbidden.insert(chord_key(std::min(a, b), std::max(a, b)));
@@ -165,8 +177,16 @@ std::optional<PolygonTriangulation> triangulate_polygon_restricted(
   if (!detail::is_canonical(polygon)) {
     return triangulate_polygon_restricted(detail::canonical(polygon), options);
   }
-  return detail::with_weight(
-      options, [&](const auto& weight) { return solve_restricted(polygon, weight, options); });
+  return detail::with_weight(options, [&](const auto& weight) {
+    auto found = solve_restricted(polygon, weight, options, nullptr);
+    if (found || polygon.forbidden_chords.empty() || detail::cancelled(options)) return found;
+    // An anchor at the end of a forbidden chord (a copy of a bridge's end, in loops joined by
+    // bridges) can leave the levels above it without a triangulation: once more with the anchors
+    // moved off such ends.
+    std::vector<char> avoid(polygon.points.size(), 0);
+    for (const auto& [a, b] : polygon.forbidden_chords) avoid[a] = avoid[b] = 1;
+    return solve_restricted(polygon, weight, options, &avoid);
+  });
 }
 
 }  // namespace holefill

@@ -55,11 +55,12 @@ double mean_distance_to(const Mesh& mesh, const HoleFill& fill,
 
 // Fills every hole of `before` with its islands and checks what every island fill must give: one
 // closed, oriented, manifold surface of the sphere's genus, with the original part untouched.
-std::vector<HoleFill> fill_and_check_closed(const Mesh& before, Mesh& after, std::size_t islands) {
+std::vector<HoleFill> fill_and_check_closed(const Mesh& before, Mesh& after, std::size_t islands,
+                                            const FillOptions& options = {}) {
   const auto holes = find_holes(before);
   EXPECT_EQ(holes.size(), islands + 1);
   after = before;
-  const auto fills = fill_holes(after, holes, {});
+  const auto fills = fill_holes(after, holes, options);
   EXPECT_EQ(fills.size(), 1u);
   for (const auto& fill : fills) {
     EXPECT_FALSE(fill.failed()) << fill.failure;
@@ -198,8 +199,20 @@ TEST(Islands, EveryLoopOnItsOwnWhenDetectionIsOff) {
   EXPECT_EQ(connected_components(after), 2u);  // two closed pieces, one inside the other
 }
 
+// Joined along a tree of shortest bridges, as holes with many islands are (JoinOptions::
+// weighed_loops; tests/cost/join_cost_test.cpp has 200 pieces), the same holes close as well.
+TEST(Islands, FillsAroundThreeIslandsJoinedAlongATreeOfShortestBridges) {
+  const Mesh before = cut_around_islands(
+      make_blob(4, unit_radius), {kNorth, 0.85},
+      {{tilted(0.45, 0.0), 0.17}, {tilted(0.45, 2.1), 0.17}, {tilted(0.45, 4.2), 0.17}});
+  FillOptions options;
+  options.join.weighed_loops = 0;
+  Mesh after;
+  fill_and_check_closed(before, after, 3, options);
+}
+
 // Generated blobs with islands of random number, size and place, never seen by the code: each
-// closes into one surface of a sphere's genus.
+// closes into one surface of a sphere's genus, whether bridges are weighed or follow a tree.
 TEST(Islands, RandomBlobsWithIslandsCloseIntoOneSphere) {
   std::mt19937 rng(20260101);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -224,6 +237,9 @@ TEST(Islands, RandomBlobsWithIslandsCloseIntoOneSphere) {
     SCOPED_TRACE("trial " + std::to_string(trial));
     Mesh after;
     fill_and_check_closed(before, after, islands);
+    FillOptions along_tree;
+    along_tree.join.weighed_loops = 0;
+    fill_and_check_closed(before, after, islands, along_tree);
   }
 }
 
