@@ -12,6 +12,8 @@ namespace holefill::features {
 namespace {
 
 constexpr int kRealSeedAttempts = 60;
+constexpr int kMostFlipRounds = 50;
+const double kFlatCosine = std::cos(1e-4);  // faces within 1e-4 radians: one plane (STL floats)
 
 double dihedral_degrees(const Mesh& mesh, EdgeHandle e) {
   const auto h = mesh.halfedge_handle(e, 0);
@@ -118,6 +120,40 @@ void split_long_edges(Mesh& mesh, double longest) {
       const double around_length = mesh.calc_edge_length(around);
       if (around_length > longest) queue.emplace(around_length, around.idx());
     }
+  }
+}
+
+void flip_flat_edges_to_delaunay(Mesh& mesh) {
+  auto opposite_angle = [&](HalfedgeHandle h) {
+    const Point a = mesh.point(mesh.from_vertex_handle(h)),
+                b = mesh.point(mesh.to_vertex_handle(h));
+    const Point c = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
+    return std::atan2(OpenMesh::cross(a - c, b - c).norm(), OpenMesh::dot(a - c, b - c));
+  };
+  for (int round = 0; round < kMostFlipRounds; ++round) {
+    std::size_t flips = 0;
+    for (const auto e : mesh.edges()) {
+      if (mesh.is_boundary(e) || !mesh.is_flip_ok(e)) continue;
+      const auto h = mesh.halfedge_handle(e, 0), g = mesh.halfedge_handle(e, 1);
+      // Only where the two faces lie in one plane, so that the surface stays the same; and only
+      // if the new faces would lie in it too (the quadrilateral is convex: no fold).
+      const Point n0 = mesh.calc_face_normal(mesh.face_handle(h));
+      const Point n1 = mesh.calc_face_normal(mesh.face_handle(g));
+      if (OpenMesh::dot(n0, n1) < kFlatCosine) continue;
+      if (opposite_angle(h) + opposite_angle(g) <= std::numbers::pi + 1e-12) continue;
+      const Point c = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
+      const Point d = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(g)));
+      const Point a = mesh.point(mesh.from_vertex_handle(h)),
+                  b = mesh.point(mesh.to_vertex_handle(h));
+      // The new faces (c, a, d) and (d, b, c) face the same way as the old.
+      if (OpenMesh::dot(OpenMesh::cross(a - c, d - c), n0) <= 0.0 ||
+          OpenMesh::dot(OpenMesh::cross(d - c, b - c), n0) <= 0.0) {
+        continue;
+      }
+      mesh.flip(e);
+      ++flips;
+    }
+    if (flips == 0) return;
   }
 }
 

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "cad_cases.h"
+#include "cad_parts.h"
 #include "cad_shapes.h"
 #include "crease_measure.h"
 #include "holefill/holes.h"
@@ -114,6 +115,60 @@ TEST(CadSet, SplittingLongEdgesKeepsTheSurface) {
   for (const auto v : mesh.vertices()) {
     const Point p = mesh.point(v);
     EXPECT_NEAR(std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])}), 1.0, 1e-12);
+  }
+}
+
+// The mean over the faces of each face's smallest angle, radians.
+double mean_smallest_angle(const Mesh& mesh) {
+  double sum = 0.0;
+  for (const auto f : mesh.faces()) {
+    double smallest = std::numbers::pi;
+    for (const auto h : mesh.fh_range(f)) {
+      const Point a = mesh.point(mesh.from_vertex_handle(h));
+      const Point b = mesh.point(mesh.to_vertex_handle(h));
+      const Point c = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
+      smallest = std::min(
+          smallest, std::atan2(OpenMesh::cross(a - c, b - c).norm(), OpenMesh::dot(a - c, b - c)));
+    }
+    sum += smallest;
+  }
+  return sum / static_cast<double>(mesh.n_faces());
+}
+
+TEST(CadSet, FlatFlipsKeepTheSurfaceAndMakeItDelaunay) {
+  // A box whose faces are cut unevenly (x at -1, -0.95, 1): long thin triangles, split into
+  // fans of thinner ones.
+  Mesh mesh = testing::surface_of(
+      {{-1.0, -0.95, 1.0}, {-1.0, 1.0}, {-1.0, 1.0}, [](int, int, int) { return true; }});
+  split_long_edges(mesh, 0.3);
+  const double before = mean_smallest_angle(mesh);
+  const std::size_t vertices = mesh.n_vertices();
+  flip_flat_edges_to_delaunay(mesh);
+  EXPECT_TRUE(testing::is_oriented_manifold(mesh));
+  EXPECT_EQ(mesh.n_vertices(), vertices);
+  EXPECT_NEAR(enclosed_volume(mesh), 8.0, 1e-9);
+  EXPECT_GT(mean_smallest_angle(mesh), before);
+  // Delaunay: across every edge inside a face of the box, the opposite angles sum to at most 180.
+  auto opposite = [&](HalfedgeHandle h) {
+    const Point a = mesh.point(mesh.from_vertex_handle(h)),
+                b = mesh.point(mesh.to_vertex_handle(h));
+    const Point c = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
+    return std::atan2(OpenMesh::cross(a - c, b - c).norm(), OpenMesh::dot(a - c, b - c));
+  };
+  std::size_t flat_edges = 0;
+  for (const auto e : mesh.edges()) {
+    const auto h = mesh.halfedge_handle(e, 0), g = mesh.halfedge_handle(e, 1);
+    const Point n0 = mesh.calc_face_normal(mesh.face_handle(h));
+    const Point n1 = mesh.calc_face_normal(mesh.face_handle(g));
+    if (OpenMesh::dot(n0, n1) < 1.0 - 1e-12) continue;
+    ++flat_edges;
+    EXPECT_LE(opposite(h) + opposite(g), std::numbers::pi + 1e-9);
+  }
+  EXPECT_GT(flat_edges, 100u);
+  // Every face still lies in one of the box's faces: no flip crossed an edge of the box.
+  for (const auto f : mesh.faces()) {
+    const Point n = mesh.calc_face_normal(f);
+    EXPECT_NEAR(std::max({std::abs(n[0]), std::abs(n[1]), std::abs(n[2])}), 1.0, 1e-12);
   }
 }
 

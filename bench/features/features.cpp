@@ -106,7 +106,8 @@ Arguments parse_arguments(int argc, char** argv) {
   return a;
 }
 
-// A real mesh, closed and manifold after the loader's stitching, its long edges split.
+// A real mesh, closed and manifold after the loader's stitching, its long edges split and its
+// flat parts' edges flipped to Delaunay.
 Mesh load_real(const std::filesystem::path& path, double edge_fraction) {
   Mesh mesh = load_mesh(path);
   prepare_mesh(mesh);
@@ -120,6 +121,7 @@ Mesh load_real(const std::filesystem::path& path, double edge_fraction) {
     high.maximize(mesh.point(v));
   }
   split_long_edges(mesh, edge_fraction * (high - low).norm());
+  flip_flat_edges_to_delaunay(mesh);
   return mesh;
 }
 
