@@ -52,6 +52,7 @@ struct CommandLine {
     info->add_flag("--json", info_arguments.json, "print the counts and holes as JSON");
     add_format_option(*info, info_arguments.format);
     add_preparation_options(*info, info_arguments.preparation);
+    add_islands_option(*info, info_arguments.islands);
     fill = app.add_subcommand("fill", "fill holes, write the result, print a table");
     add_fill_options(*fill, fill_arguments);
     help = app.add_subcommand("help", "this text, or a command's options");

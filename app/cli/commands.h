@@ -32,7 +32,8 @@ struct InfoArguments {
   std::string input;
   std::string format;  // of standard input, for an input of "-"
   bool json = false;
-  PreparationChoice preparation;  // stitching, small pieces, borders
+  PreparationChoice preparation;  // stitching, small pieces, borders (islands from `islands`)
+  std::string islands = "on";     // --islands: "off" skips island detection
 };
 
 int run_info(const InfoArguments& arguments, const Streams& streams);

@@ -108,11 +108,7 @@ void add_selection_options(CLI::App& command, FillArguments& a) {
       .add_option("--max-boundary", a.selection.max_boundary_edges,
                   "fill only holes with at most this many boundary edges\n(0: no limit)")
       ->transform(whole_number(0, kNoLimit));
-  command
-      .add_option("--islands", a.islands,
-                  "on: fill each hole with the islands floating in it (one\n"
-                  "patch); off: fill every loop on its own")
-      ->check(CLI::IsMember({"on", "off"}));
+  add_islands_option(command, a.islands);
   command
       .add_option("--bridge", a.bridges,
                   "join holes A and B with one band instead of two caps,\n"
@@ -202,6 +198,7 @@ void finish_fill_options(FillArguments& a) {
   a.options.triangulate.fold_limit = a.fold_limit_degrees / kDegreesPerRadian;
   a.options.refine.remesh = a.remesh == "on";
   a.options.islands.detect = a.islands == "on";
+  a.preparation.islands = a.options.islands;
   a.options.smooth.method = value_of(kSmoothMethods, a.smooth);
   a.options.smooth.fair.cotangent_weights = a.fair_weights == "cotangent";
   a.options.last_stage = value_of(kStages, a.stage);

@@ -35,7 +35,9 @@ std::string joined_note(const std::string& first, const std::string& second) {
 
 int run_info(const InfoArguments& a, const Streams& streams) {
   Mesh mesh = load_and_warn(a.input, a.format, streams);
-  const PreparedMesh prepared = prepare_mesh(mesh, a.preparation, a.input, streams.err);
+  PreparationChoice choice = a.preparation;
+  choice.islands.detect = a.islands == "on";
+  const PreparedMesh prepared = prepare_mesh(mesh, choice, a.input, streams.err);
   const auto& holes = prepared.holes;
   std::ostream& out = streams.out;
   if (a.json) {
@@ -49,7 +51,7 @@ int run_info(const InfoArguments& a, const Streams& streams) {
       << holes.size() << " holes\n";
   if (holes.empty()) return kOk;
   // A space between columns whatever the widths: huge values widen a row, never merge cells.
-  const IslandMap islands = find_islands(mesh, holes);
+  const IslandMap& islands = prepared.islands;
   out << "  hole  boundary_edges   perimeter  note\n";
   for (std::size_t i = 0; i < holes.size(); ++i) {
     const Hole& hole = holes[i];

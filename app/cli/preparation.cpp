@@ -33,6 +33,14 @@ void add_preparation_options(CLI::App& command, PreparationChoice& choice) {
                    "whose patch would span 40% or more of the piece's area");
 }
 
+void add_islands_option(CLI::App& command, std::string& choice) {
+  command
+      .add_option("--islands", choice,
+                  "on: fill each hole with the islands floating in it (one\n"
+                  "patch); off: fill every loop on its own")
+      ->check(CLI::IsMember({"on", "off"}));
+}
+
 PreparedMesh prepare_mesh(Mesh& mesh, const PreparationChoice& choice, const std::string& path,
                           std::ostream& out) {
   PreparedMesh prepared = holefill::prepare_mesh(mesh, choice);

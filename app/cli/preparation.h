@@ -22,6 +22,10 @@ using PreparationChoice = PrepareOptions;
 // `command`, writing into `choice` (which must outlive the parse).
 void add_preparation_options(CLI::App& command, PreparationChoice& choice);
 
+// Adds --islands on|off (the islands fill_holes joins to their hole; islands.h), writing into
+// `choice` ("on" or "off").
+void add_islands_option(CLI::App& command, std::string& choice);
+
 // Runs holefill::prepare_mesh on `mesh` and writes what it found to `out` (stderr, like the
 // loader's repairs), each line as "holefill: PATH: ...".
 PreparedMesh prepare_mesh(Mesh& mesh, const PreparationChoice& choice, const std::string& path,

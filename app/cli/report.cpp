@@ -133,7 +133,7 @@ std::string json_report(const ReportInput& in) {
 
 std::string json_info(const std::string& input_path, const Mesh& mesh,
                       const PreparedMesh& prepared) {
-  const IslandMap islands = find_islands(mesh, prepared.holes);
+  const IslandMap& islands = prepared.islands;
   Json list = Json::array();
   for (std::size_t i = 0; i < prepared.holes.size(); ++i) {
     const Hole& hole = prepared.holes[i];

@@ -128,6 +128,45 @@ WeldReport weld_where_it_helps(Mesh& mesh, double tolerance) {
   return report;
 }
 
+// Which loops are filled (PreparedMesh::ids_to_fill) and the lines about the others. A loop that
+// is an island of a hole being filled is filled with it whatever it looks like on its own (the rim
+// of a small piece looks like a border or a flat piece): no line says it is kept open or never
+// filled.
+void tell_loops(PreparedMesh& prepared, const PrepareOptions& options) {
+  auto filled = [&](std::size_t i) {
+    const LoopKind kind = prepared.classes[i].kind;
+    return kind == LoopKind::Hole || (kind == LoopKind::Border && !options.keep_borders);
+  };
+  LoopLines flat("loops that are not holes (the rims of flat pieces)");
+  LoopLines kept("loops kept open as borders");
+  LoopLines borders("loops that look like the border of an open surface");
+  for (std::size_t i = 0; i < prepared.holes.size(); ++i) {
+    const Hole& hole = prepared.holes[i];
+    const LoopClass& c = prepared.classes[i];
+    const std::string loop = "loop " + std::to_string(hole.id);
+    if (hole.repeated_vertices > 0) ++prepared.pinched_loops;
+    const int outer = prepared.islands.outer[static_cast<std::size_t>(hole.id)];
+    if (outer >= 0 && filled(static_cast<std::size_t>(outer))) {
+      if (filled(i)) prepared.ids_to_fill.push_back(hole.id);
+    } else if (c.kind == LoopKind::FlatPiece) {
+      flat.add(loop + " is not a hole but " + c.reason);
+    } else if (c.kind == LoopKind::Border && options.keep_borders) {
+      ++prepared.borders_kept;
+      kept.add(loop + " kept open as a border: " + c.reason);
+    } else {
+      if (c.kind == LoopKind::Border) {
+        borders.add(loop + " looks like the border of an open surface (" + c.reason +
+                    "); filled only where a cap does not cut the surface (--keep-borders leaves "
+                    "it open)");
+      }
+      prepared.ids_to_fill.push_back(hole.id);
+    }
+  }
+  flat.flush(prepared.messages);
+  kept.flush(prepared.messages);
+  borders.flush(prepared.messages);
+}
+
 }  // namespace
 
 PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options) {
@@ -151,31 +190,8 @@ PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options) {
     if (separate_touching_holes(mesh, prepared.holes) > 0) prepared.holes = find_holes(mesh);
     prepared.classes = classify_loops(mesh, prepared.holes, pieces);
   }
-  LoopLines flat("loops that are not holes (the rims of flat pieces)");
-  LoopLines kept("loops kept open as borders");
-  LoopLines borders("loops that look like the border of an open surface");
-  for (std::size_t i = 0; i < prepared.holes.size(); ++i) {
-    const Hole& hole = prepared.holes[i];
-    const LoopClass& c = prepared.classes[i];
-    const std::string loop = "loop " + std::to_string(hole.id);
-    if (hole.repeated_vertices > 0) ++prepared.pinched_loops;
-    if (c.kind == LoopKind::FlatPiece) {
-      flat.add(loop + " is not a hole but " + c.reason);
-    } else if (c.kind == LoopKind::Border && options.keep_borders) {
-      ++prepared.borders_kept;
-      kept.add(loop + " kept open as a border: " + c.reason);
-    } else {
-      if (c.kind == LoopKind::Border) {
-        borders.add(loop + " looks like the border of an open surface (" + c.reason +
-                    "); filled only where a cap does not cut the surface (--keep-borders leaves "
-                    "it open)");
-      }
-      prepared.ids_to_fill.push_back(hole.id);
-    }
-  }
-  flat.flush(prepared.messages);
-  kept.flush(prepared.messages);
-  borders.flush(prepared.messages);
+  prepared.islands = find_islands(mesh, prepared.holes, options.islands);
+  tell_loops(prepared, options);
   return prepared;
 }
 

@@ -43,6 +43,25 @@ TEST_F(Cli, InfoNamesTheIslandsOfAHole) {
   EXPECT_EQ(holes[1]["island_of"], 0);
 }
 
+// info can skip island detection as fill can (its cost grows with the loops' lengths).
+TEST_F(Cli, InfoWithIslandsOffNamesNoIsland) {
+  const std::string input = write_sphere_with_island(in_dir("island.obj"));
+  const CliRun run = run_cli({"info", input, "--islands", "off"});
+  EXPECT_EQ(run.code, cli::kOk) << run.err;
+  EXPECT_NE(run.out.find("2 holes"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("islands 1"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("island of"), std::string::npos) << run.out;
+  const CliRun json = run_cli({"info", input, "--json", "--islands", "off"});
+  ASSERT_EQ(json.code, cli::kOk) << json.err;
+  const auto holes = nlohmann::json::parse(json.out)["holes"];
+  ASSERT_EQ(holes.size(), 2u);
+  for (const auto& hole : holes) {
+    EXPECT_EQ(hole["islands"], nlohmann::json::array());
+    EXPECT_FALSE(hole.contains("island_of"));
+  }
+  EXPECT_EQ(run_cli({"info", input, "--islands", "maybe"}).code, cli::kUsage);
+}
+
 TEST_F(Cli, FillClosesAHoleWithItsIslandByDefault) {
   const std::string input = write_sphere_with_island(in_dir("island.obj"));
   const std::string out = in_dir("filled.obj"), report = in_dir("report.json");

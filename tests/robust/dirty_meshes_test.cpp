@@ -124,6 +124,32 @@ TEST_F(Dirty, DomesWithHolesKeepTheirRimAndCloseTheHoles) {
   }
 }
 
+// A piece floating in a hole is filled with it (islands.h), though its rim on its own looks like
+// a border: --keep-borders said it kept that loop open, and then filled it (issue 32, #8). With
+// --islands off the piece is no island: its rim is kept open and said so.
+TEST_F(Dirty, AnIslandThatLooksLikeABorderIsFilledWithItsHoleAndNotSaidToBeKept) {
+  const Point top(0, 0, 1);
+  const Soup soup = without(sphere_soup(3), [&](const Point& c) {
+    const double d = (c - top).norm();
+    return d > 0.2 && d < 0.6;
+  });
+  Filled f = fill(soup, {"--keep-borders"});
+  ASSERT_EQ(find_holes(f.before).size(), 2u);
+  EXPECT_EQ(f.cli.code, cli::kOk) << f.cli.err;
+  EXPECT_EQ(problems(f), "");
+  EXPECT_TRUE(find_holes(f.after).empty()) << f.cli.err;
+  EXPECT_EQ(f.cli.err.find("kept open"), std::string::npos) << f.cli.err;
+  EXPECT_EQ(f.report["loops"]["borders_kept"], 0);
+
+  f = fill(soup, {"--keep-borders", "--islands", "off"});
+  EXPECT_EQ(problems(f), "");
+  const auto after = find_holes(f.after);
+  ASSERT_EQ(after.size(), 1u) << f.cli.err;
+  EXPECT_EQ(loop_vertices(after[0]), loop_near(f.before, top));
+  EXPECT_NE(f.cli.err.find("kept open as a border"), std::string::npos) << f.cli.err;
+  EXPECT_EQ(f.report["loops"]["borders_kept"], 1);
+}
+
 TEST_F(Dirty, ClosedSurfacesHaveNoBorderToKeep) {
   // A sphere with a large and a small hole, and a sphere cut below its equator (a deep bowl).
   Soup sphere = with_hole(with_hole(sphere_soup(3), Point(1, 0, 0), 0.5), Point(0, 0, 1), 0.2);

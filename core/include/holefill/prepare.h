@@ -1,7 +1,8 @@
 // Preparing a loaded mesh for filling, the same for the command-line tool, the viewer and the
 // library's users: stitch seams (stitch.h) and weld vertices where holes touch (weld.h), drop small
-// pieces when asked (components.h), find the holes (holes.h) and tell holes from borders and flat
-// pieces (borders.h); and the lines that tell the user what was found.
+// pieces when asked (components.h), find the holes (holes.h), tell holes from borders and flat
+// pieces (borders.h) and find the islands (islands.h); and the lines that tell the user what was
+// found.
 #pragma once
 
 #include <cstddef>
@@ -11,6 +12,7 @@
 #include "holefill/borders.h"
 #include "holefill/components.h"
 #include "holefill/holes.h"
+#include "holefill/islands.h"
 #include "holefill/mesh.h"
 #include "holefill/stitch.h"
 #include "holefill/weld.h"
@@ -22,6 +24,10 @@ struct PrepareOptions {
   StitchOptions stitch_options;         // the tolerance of both
   std::size_t remove_pieces_up_to = 0;  // remove pieces of at most this many faces (0: none)
   bool keep_borders = false;            // leave the loops that look like borders out of the fill
+  // The islands the fill will look for (FillOptions::islands): a loop that is an island of a hole
+  // being filled is filled with it, so it is neither kept open as a border nor called a flat
+  // piece's rim.
+  IslandOptions islands;
   bool operator==(const PrepareOptions&) const = default;
 };
 
@@ -40,8 +46,11 @@ struct PreparedMesh {
   RemovedPieces removed;
   PieceCounts pieces;
   std::vector<Hole> holes;         // find_holes after the steps above, touching holes separated
-  std::vector<LoopClass> classes;  // one per hole
-  std::vector<int> ids_to_fill;    // the holes to fill: no flat piece, no border when kept
+  std::vector<LoopClass> classes;  // one per hole (as the loop looks on its own)
+  IslandMap islands;               // find_islands(mesh, holes, options.islands)
+  // The holes to fill: no flat piece, no border when kept, except islands of the holes filled
+  // (which come with them).
+  std::vector<int> ids_to_fill;
   std::size_t borders_kept = 0;
   std::size_t pinched_loops = 0;  // loops passing more than once through one vertex
   // What the steps did and found, one line each, for the user (no file name, no newline). Runs of
