@@ -1,35 +1,23 @@
 #include "holefill/fill.h"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <exception>
-#include <mutex>
 #include <new>
-#include <system_error>
-#include <thread>
 
 #include "advance_unscaled.h"
-#include "available_cores.h"
 #include "avoid_intersections.h"
 #include "hole_triangulation.h"
 #include "holefill/attributes.h"
 #include "holefill/errors.h"
 #include "holefill/loop_groups.h"
 #include "patch_intersections.h"
-#include "patch_room.h"
+#include "per_hole_fill.h"
 #include "safe_scale.h"
 #include "stage_undo.h"
 
 namespace holefill {
 namespace {
 
-template <class Work>
-double timed(Work&& work) {
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using detail::timed;
 
 // The pairs count_patch_intersections counts; `around` (when given) holds every face of the mesh
 // but the patch's, so that only faces near the patch are looked at.
@@ -260,15 +248,6 @@ StageRun advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOp
   return StageRun::Ran;
 }
 
-HoleFill fill_planned(Mesh& mesh, const Hole& hole, const FillOptions& options,
-                      const PlannedTriangulation* plan, const detail::MeshFaceIndex* index) {
-  HoleFill fill;
-  while (fill.stage() < options.last_stage &&
-         advance_with(mesh, hole, fill, options, plan, index) == StageRun::Ran) {
-  }
-  return fill;
-}
-
 // Runs work() with the mesh at a safe scale (safe_scale.h); returns its result and whether the
 // mesh was scaled (then the stats measured meanwhile need measuring again).
 template <class Work>
@@ -305,87 +284,21 @@ FillOptions without_avoidance(FillOptions options) {
   return options;
 }
 
-std::vector<HoleFill> fill_groups(Mesh& mesh, const std::vector<Hole>& holes,
-                                  const std::vector<LoopGroup>& chosen, const FillOptions& options,
-                                  Progress* progress) {
-  // The dynamic programs only read the mesh and dominate the time: run them on every core,
-  // largest holes first (holes come sorted by size), then add the patches one by one.
-  std::vector<GroupPlan> plans(chosen.size());
-  std::vector<double> plan_seconds(chosen.size(), 0.0);
-  std::atomic<std::size_t> next{0}, planned{0};
-  // Triangulating and adding each count for half of the reported progress.
-  const auto report = [&](std::size_t steps) {
-    if (progress) progress->set_fraction(0.5 * static_cast<double>(steps) / chosen.size());
-  };
-  const auto cancelled = [&] { return progress && progress->cancelled(); };
-  const auto threads = static_cast<unsigned>(
-      std::clamp<std::size_t>(options.threads ? options.threads : detail::available_cores(), 1,
-                              std::max<std::size_t>(1, chosen.size())));
-  TriangulateOptions triangulate = options.triangulate;
-  triangulate.progress = progress;  // a cancel also stops a long dynamic program between rows
-  // A number of threads asked for bounds the dynamic programs' too: the threads left over when
-  // there are fewer holes than threads go to each hole's program.
-  if (options.threads && !triangulate.threads) triangulate.threads = options.threads / threads;
-  // What a worker throws (std::bad_alloc) stops the others and is rethrown here, the mesh
-  // unchanged.
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  auto worker = [&] {
-    try {
-      for (std::size_t i = next++; i < chosen.size() && !cancelled(); i = next++) {
-        plan_seconds[i] = timed(
-            [&] { plans[i] = plan_group(mesh, holes, chosen[i], triangulate, options.join); });
-        report(++planned);
-      }
-    } catch (...) {
-      next = chosen.size();
-      const std::lock_guard lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-    }
-  };
-  std::vector<std::thread> pool;
-  pool.reserve(threads);
-  for (unsigned t = 1; t < threads; ++t) {
-    try {
-      pool.emplace_back(worker);
-    } catch (const std::system_error&) {
-      break;  // no thread to spare (memory, limits): the ones running share the holes
-    }
-  }
-  worker();
-  for (auto& thread : pool) thread.join();
-  if (failure) std::rethrow_exception(failure);
-  if (cancelled()) return {};
+}  // namespace
 
-  detail::PatchRoom room;
-  for (const auto& plan : plans) {
-    if (plan.plan.triangulation) {
-      room += detail::patch_room(mesh, plan.polygon, *plan.plan.triangulation,
-                                 options.last_stage >= Stage::Refined);
-    }
+HoleFill detail::fill_planned(Mesh& mesh, const Hole& hole, const FillOptions& options,
+                              const PlannedTriangulation* plan,
+                              const detail::MeshFaceIndex* index) {
+  HoleFill fill;
+  while (fill.stage() < options.last_stage &&
+         advance_with(mesh, hole, fill, options, plan, index) == StageRun::Ran) {
   }
-  detail::reserve_patch_room(mesh, room);
-  // Patches are checked against the faces near them; each finished patch joins those faces.
-  std::vector<detail::Box> regions;
-  for (const auto& plan : plans)
-    regions.push_back(detail::neighbourhood_of(mesh, plan.polygon.vertices));
-  detail::MeshFaceIndex index(mesh, regions);
-  std::vector<HoleFill> fills;
-  for (std::size_t i = 0; i < chosen.size() && !cancelled(); ++i) {
-    HoleFill& fill = fills.emplace_back(fill_planned(
-        mesh, plans[i].polygon, chosen[i].holes.size() > 1 ? without_avoidance(options) : options,
-        &plans[i].plan, &index));
-    report(chosen.size() + i + 1);
-    fill.times.triangulate_seconds += plan_seconds[i];
-    fill.boundary_edges = chosen[i].boundary_edges(holes);
-    fill.joined_holes.assign(chosen[i].holes.begin() + 1, chosen[i].holes.end());
-    fill.islands_note = chosen[i].note;
-    for (const auto f : fill.patch.faces) index.add(f.idx(), detail::box_of(mesh, f));
-  }
-  return fills;
+  return fill;
 }
 
-}  // namespace
+FillOptions detail::group_options(const LoopGroup& group, const FillOptions& options) {
+  return group.holes.size() > 1 ? without_avoidance(options) : options;
+}
 
 std::size_t count_patch_intersections(const Mesh& mesh, const Patch& patch) {
   return count_intersections(mesh, patch, nullptr);
@@ -397,8 +310,8 @@ StageRun advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions
 
 HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options) {
   require_boundary_loops(mesh, {&hole});
-  auto [fill, scaled] =
-      at_safe_scale(mesh, [&] { return fill_planned(mesh, hole, options, nullptr, nullptr); });
+  auto [fill, scaled] = at_safe_scale(
+      mesh, [&] { return detail::fill_planned(mesh, hole, options, nullptr, nullptr); });
   if (scaled) measure_again(mesh, fill);
   return fill;
 }
@@ -462,8 +375,8 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
     for (const int id : group.holes) loops.push_back(&holes[id]);
     require_boundary_loops(mesh, loops);
   }
-  auto [fills, scaled] =
-      at_safe_scale(mesh, [&] { return fill_groups(mesh, holes, chosen, options, progress); });
+  auto [fills, scaled] = at_safe_scale(
+      mesh, [&] { return detail::fill_groups(mesh, holes, chosen, options, progress); });
   if (scaled) {
     for (auto& fill : fills) measure_again(mesh, fill);
   }

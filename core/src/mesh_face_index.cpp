@@ -226,7 +226,24 @@ const MeshFaceIndex::Part& MeshFaceIndex::part_holding(const Box& box) const {
   return parts_.back();
 }
 
+MeshFaceIndex::MeshFaceIndex(const MeshFaceIndex& whole, const Box& region)
+    : mesh_(whole.mesh_),
+      indexed_faces_(whole.indexed_faces_),
+      whole_(&whole),
+      view_region_(region) {}
+
+bool MeshFaceIndex::added_overlaps(const Box& box) const {
+  std::vector<int> ids;
+  return added_.append_overlapping(box, ids) > 0;
+}
+
 std::vector<int> MeshFaceIndex::near(const Box& box) const {
+  if (whole_) {
+    looked_up_.add(box);
+    if (holds(view_region_, box)) return whole_->near(box);
+    looked_outside_ = true;
+    return {};
+  }
   std::vector<int> ids = part_holding(box).grid.near(box);
   if (added_.append_overlapping(box, ids) > 0) {
     std::sort(ids.begin(), ids.end());

@@ -32,6 +32,9 @@ class MeshFaceIndex {
   // every lookup whose box it overlaps.
   void add(int id, const Box& box) { added_.add(id, box); }
 
+  // Whether an entry added since the index was made overlaps `box`.
+  bool added_overlaps(const Box& box) const;
+
   // The ids (face indices) of the indexed faces and added entries whose boxes overlap `box`,
   // ascending, each once. A box that no region holds first files the faces near it (a pass over
   // the mesh).
@@ -40,6 +43,24 @@ class MeshFaceIndex {
   // How many faces the index has filed so far, counted once per region set that filed them: the
   // faces whose boxes overlap a region (and faces spanning many of the region grid's cells).
   std::size_t filed_faces() const;
+
+  // A view of `whole` for one hole filled apart from the mesh (patch_apart.h): the same mesh,
+  // faces and ids, for lookups inside `region` (one of the regions `whole` was made with); each
+  // lookup's box is added to looked_up(), and one outside the region finds nothing and sets
+  // looked_outside(). A view only reads `whole`, so views on several threads may share it while
+  // nothing changes it; `whole` must outlive the view.
+  MeshFaceIndex(const MeshFaceIndex& whole, const Box& region);
+  const Box& looked_up() const { return looked_up_; }
+  bool looked_outside() const { return looked_outside_; }
+
+  // The mesh whose faces the ids number.
+  const Mesh& mesh() const { return mesh_; }
+
+  // How many threads one check through this index may use (patch_intersections.h; 1 unless set,
+  // a view's its whole's): the threads fill_holes has left over when it has fewer holes than
+  // threads.
+  void set_threads(unsigned threads) { threads_ = threads; }
+  unsigned threads() const { return whole_ ? whole_->threads() : threads_; }
 
  private:
   // The faces near some regions, in one grid; `everywhere` when a region was not a finite box
@@ -59,6 +80,12 @@ class MeshFaceIndex {
   int indexed_faces_;                // the faces below this index (those not deleted) are indexed
   mutable std::vector<Part> parts_;  // grown by lookups (the index is read by one thread)
   BoxBuckets added_;
+  unsigned threads_ = 1;
+  // A view's (otherwise null and unused).
+  const MeshFaceIndex* whole_ = nullptr;
+  Box view_region_;
+  mutable Box looked_up_;
+  mutable bool looked_outside_ = false;
 };
 
 }  // namespace holefill::detail

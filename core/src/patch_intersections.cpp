@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "exact_triangle_intersection.h"
+#include "parallel_indices.h"
 #include "segment_box_tree.h"
 #include "triangle_intersection.h"
 
@@ -19,6 +20,9 @@ double scale_for(double magnitude) {
   return std::ldexp(1.0, -std::clamp(std::ilogb(magnitude), -1000, 1000));
 }
 
+// Patch triangles scanned by one task when a large patch is checked on several threads.
+constexpr int kTrianglesPerBlock = 4096;
+
 Box box_of_corners(const std::array<Point, 3>& corners) {
   Box box;
   for (const auto& p : corners) box.add(p);
@@ -31,6 +35,10 @@ std::vector<IntersectingPair> triangle_intersections(
     const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
     const PatchFaceSet* in_patch, const MeshFaceIndex* around, bool exact_too) {
   if (triangles.empty()) return {};
+  // The index may number the faces of another mesh than the patch's (a hole filled apart from the
+  // mesh, patch_apart.h): the other triangles are read there, and none of them is the patch's.
+  const Mesh& others = around ? around->mesh() : mesh;
+  if (&others != &mesh) in_patch = nullptr;
   // Candidates: the patch's triangles first, then the mesh's faces near them. The arrays are
   // sized before they are filled, and the mesh faces' corners read again rather than kept: after
   // each stage of a large hole they hold hundreds of thousands of entries, and on this VM
@@ -49,8 +57,8 @@ std::vector<IntersectingPair> triangle_intersections(
     boxes.emplace_back(static_cast<int>(boxes.size()), box_of_corners(t));
   }
   auto consider = [&](FaceHandle f) {
-    if ((in_patch && in_patch->contains(f)) || mesh.valence(f) != 3) return;
-    const Box box = box_of(mesh, f);
+    if ((in_patch && in_patch->contains(f)) || others.valence(f) != 3) return;
+    const Box box = box_of(others, f);
     if (!box.overlaps(reach)) return;
     faces.push_back(f);
     boxes.emplace_back(static_cast<int>(boxes.size()), box);
@@ -68,30 +76,49 @@ std::vector<IntersectingPair> triangle_intersections(
   scaled.reserve(faces.size());
   for (const auto& t : triangles) scaled.push_back(triangle_from(t, scale));
   for (std::size_t o = triangles.size(); o < faces.size(); ++o) {
-    auto fv = mesh.cfv_iter(faces[o]);
-    scaled.push_back(triangle_from({mesh.point(*fv), mesh.point(*++fv), mesh.point(*++fv)}, scale));
+    auto fv = others.cfv_iter(faces[o]);
+    scaled.push_back(
+        triangle_from({others.point(*fv), others.point(*++fv), others.point(*++fv)}, scale));
   }
 
   // The exact test takes the coordinates as stored.
   const auto corners_of = [&](int o) -> std::array<Point, 3> {
     if (o < patch_triangles) return triangles[o];
-    auto fv = mesh.cfv_iter(faces[o]);
-    return {mesh.point(*fv), mesh.point(*++fv), mesh.point(*++fv)};
+    auto fv = others.cfv_iter(faces[o]);
+    return {others.point(*fv), others.point(*++fv), others.point(*++fv)};
   };
-  std::vector<IntersectingPair> pairs;
   const FaceGrid grid(std::move(boxes));
-  for (int i = 0; i < patch_triangles; ++i) {
-    if (!scaled[i] && !exact_too) continue;
-    for (const int o : grid.near(box_of_corners(triangles[i]))) {
-      if (o < patch_triangles && o <= i) continue;  // pairs within the patch: once, from the first
-      const bool found = scaled[i] && scaled[o] && triangles_intersect(*scaled[i], *scaled[o]);
-      if (!found && !(exact_too && exactly_intersect_filtered(triangles[i], corners_of(o)))) {
-        continue;
+  auto scan = [&](int begin, int end, std::vector<IntersectingPair>& pairs) {
+    for (int i = begin; i < end; ++i) {
+      if (!scaled[i] && !exact_too) continue;
+      for (const int o : grid.near(box_of_corners(triangles[i]))) {
+        if (o < patch_triangles && o <= i)
+          continue;  // pairs within the patch: once, from the first
+        const bool found = scaled[i] && scaled[o] && triangles_intersect(*scaled[i], *scaled[o]);
+        if (!found && !(exact_too && exactly_intersect_filtered(triangles[i], corners_of(o)))) {
+          continue;
+        }
+        pairs.push_back(o < patch_triangles ? IntersectingPair{i, o, FaceHandle()}
+                                            : IntersectingPair{i, -1, faces[o]});
       }
-      pairs.push_back(o < patch_triangles ? IntersectingPair{i, o, FaceHandle()}
-                                          : IntersectingPair{i, -1, faces[o]});
     }
+  };
+  // A large patch (a hole of a thousand edges refined) is scanned in blocks on the threads the
+  // index allows, the blocks' pairs joined in order: the pairs of one thread.
+  const unsigned threads = around ? around->threads() : 1;
+  const int blocks = (patch_triangles + kTrianglesPerBlock - 1) / kTrianglesPerBlock;
+  if (threads < 2 || blocks < 2) {
+    std::vector<IntersectingPair> pairs;
+    scan(0, patch_triangles, pairs);
+    return pairs;
   }
+  std::vector<std::vector<IntersectingPair>> block_pairs(static_cast<std::size_t>(blocks));
+  for_each_index(block_pairs.size(), threads, [&](std::size_t block) {
+    const int begin = static_cast<int>(block) * kTrianglesPerBlock;
+    scan(begin, std::min(patch_triangles, begin + kTrianglesPerBlock), block_pairs[block]);
+  });
+  std::vector<IntersectingPair> pairs;
+  for (const auto& block : block_pairs) pairs.insert(pairs.end(), block.begin(), block.end());
   return pairs;
 }
 
@@ -103,23 +130,24 @@ std::vector<std::pair<int, int>> chords_through_mesh(
   for (const auto& p : points) reach.add(p);
   std::optional<MeshFaceIndex> own;
   if (!around) around = &own.emplace(mesh, std::vector<Box>{reach});
+  const Mesh& others = around->mesh();  // the patch's mesh, or the one it is filled apart from
   std::vector<int> faces = around->near(reach);
   double magnitude = reach.magnitude();
   std::vector<std::pair<int, Box>> boxes;
   for (const int f : faces) {
-    boxes.emplace_back(static_cast<int>(boxes.size()), box_of(mesh, FaceHandle(f)));
+    boxes.emplace_back(static_cast<int>(boxes.size()), box_of(others, FaceHandle(f)));
     magnitude = std::max(magnitude, boxes.back().second.magnitude());
   }
   const double scale = scale_for(magnitude);
   std::vector<std::optional<Triangle3>> triangles;
   for (const int f : faces) {
-    if (mesh.valence(FaceHandle(f)) != 3) {
+    if (others.valence(FaceHandle(f)) != 3) {
       triangles.emplace_back();
       continue;
     }
-    auto fv = mesh.cfv_iter(FaceHandle(f));
+    auto fv = others.cfv_iter(FaceHandle(f));
     triangles.push_back(
-        triangle_from({mesh.point(*fv), mesh.point(*++fv), mesh.point(*++fv)}, scale));
+        triangle_from({others.point(*fv), others.point(*++fv), others.point(*++fv)}, scale));
   }
   const SegmentBoxTree tree(std::move(boxes));
   std::vector<std::pair<int, int>> chords;

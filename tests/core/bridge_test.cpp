@@ -182,25 +182,7 @@ TEST(Bridge, JoinsACapsuleCutInTwoIntoOneClosedSurface) {
 }
 
 TEST(Bridge, JoinsATubeCutInTwo) {
-  Mesh before;
-  constexpr int kAround = 32, kAlong = 40;
-  std::vector<VertexHandle> at;
-  for (int j = 0; j <= kAlong; ++j) {
-    for (int i = 0; i < kAround; ++i) {
-      const double angle = 2.0 * std::numbers::pi * i / kAround;
-      at.push_back(before.add_vertex(Point(std::cos(angle), std::sin(angle), 0.1 * j)));
-    }
-  }
-  for (int j = 0; j < kAlong; ++j) {
-    if (j >= 18 && j < 22) continue;  // the cut
-    for (int i = 0; i < kAround; ++i) {
-      const auto a = at[j * kAround + i], b = at[j * kAround + (i + 1) % kAround];
-      const auto c = at[(j + 1) * kAround + (i + 1) % kAround], d = at[(j + 1) * kAround + i];
-      before.add_face(a, b, c);
-      before.add_face(a, c, d);
-    }
-  }
-  before = without_isolated_vertices(before);
+  const Mesh before = testing::tube_cut_in_two(32, 40, 18, 22);
   const auto holes = find_holes(before);
   ASSERT_EQ(holes.size(), 4u);
   Mesh after;

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "face_grid.h"
+#include "patch_intersections.h"
 #include "test_meshes.h"
 
 namespace holefill::detail {
@@ -121,6 +122,57 @@ TEST(MeshFaceIndex, FilesOnlyFacesOverlappingSpreadOutRegions) {
     ASSERT_EQ(index.near(region), scanned(mesh, static_cast<int>(mesh.n_faces()), {}, region));
   }
   EXPECT_EQ(index.filed_faces(), overlapping);  // lookups inside the regions file nothing more
+}
+
+// A view (one hole filled apart from the mesh) finds what its whole finds inside its region, and
+// nothing, saying so, outside it; it records every box looked up.
+TEST(MeshFaceIndex, AViewFindsWhatItsWholeFindsInsideItsRegionOnly) {
+  const Mesh mesh = testing::make_grid(40, [](double x, double y) { return 0.1 * x * y; });
+  const Box region = box_around(Point(0.5, 0.5, 0.0), 0.2);
+  const MeshFaceIndex whole(mesh, {region, box_around(Point(0.1, 0.1, 0.0), 0.05)});
+  const MeshFaceIndex view(whole, region);
+  const Box inside = box_around(Point(0.45, 0.55, 0.0), 0.1);
+  EXPECT_EQ(view.near(inside), scanned(mesh, static_cast<int>(mesh.n_faces()), {}, inside));
+  EXPECT_FALSE(view.near(inside).empty());
+  EXPECT_FALSE(view.looked_outside());
+  const Box across = box_around(Point(0.68, 0.5, 0.0), 0.05);
+  EXPECT_TRUE(view.near(across).empty());
+  EXPECT_TRUE(view.looked_outside());
+  EXPECT_TRUE(whole.near(across) == scanned(mesh, static_cast<int>(mesh.n_faces()), {}, across));
+  Box both = inside;
+  both.add(across);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_EQ(view.looked_up().low[axis], both.low[axis]);
+    EXPECT_EQ(view.looked_up().high[axis], both.high[axis]);
+  }
+  EXPECT_EQ(&view.mesh(), &mesh);
+}
+
+// A patch of thousands of triangles (three blocks) checked on several threads gives the pairs of one
+// thread, in the same order.
+TEST(MeshFaceIndex, ALargePatchIsCheckedInBlocksWithTheOneThreadPairs) {
+  const Mesh mesh = testing::make_grid(30, [](double x, double y) { return 0.05 * (x - y); });
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> at(0.0, 1.0), height(-0.1, 0.1);
+  std::vector<std::array<Point, 3>> triangles;
+  for (int t = 0; t < 9000; ++t) {
+    const Point c(at(rng), at(rng), height(rng));
+    triangles.push_back({c, c + Point(0.02, 0.0, height(rng)), c + Point(0.0, 0.02, height(rng))});
+  }
+  Box all;
+  all.add(Point(-1, -1, -1));
+  all.add(Point(2, 2, 1));
+  MeshFaceIndex index(mesh, {all});
+  const auto one = triangle_intersections(mesh, triangles, nullptr, &index, true);
+  index.set_threads(3);
+  const auto three = triangle_intersections(mesh, triangles, nullptr, &index, true);
+  ASSERT_GT(one.size(), 1000u);
+  ASSERT_EQ(three.size(), one.size());
+  for (std::size_t p = 0; p < one.size(); ++p) {
+    EXPECT_EQ(three[p].triangle, one[p].triangle);
+    EXPECT_EQ(three[p].other_triangle, one[p].other_triangle);
+    EXPECT_EQ(three[p].other_face, one[p].other_face);
+  }
 }
 
 }  // namespace

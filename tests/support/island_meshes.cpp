@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <vector>
 
 #include "test_meshes.h"
 
@@ -27,6 +29,27 @@ Mesh cut_around_islands(const Mesh& closed, const Cap& cut, const std::vector<Ca
            std::none_of(islands.begin(), islands.end(),
                         [&](const Cap& island) { return island.contains(centroid); });
   }));
+}
+
+Mesh tube_cut_in_two(int around, int along, int cut_begin, int cut_end) {
+  Mesh tube;
+  std::vector<VertexHandle> at;
+  for (int j = 0; j <= along; ++j) {
+    for (int i = 0; i < around; ++i) {
+      const double angle = 2.0 * std::numbers::pi * i / around;
+      at.push_back(tube.add_vertex(Point(std::cos(angle), std::sin(angle), 0.1 * j)));
+    }
+  }
+  for (int j = 0; j < along; ++j) {
+    if (j >= cut_begin && j < cut_end) continue;
+    for (int i = 0; i < around; ++i) {
+      const auto a = at[j * around + i], b = at[j * around + (i + 1) % around];
+      const auto c = at[(j + 1) * around + (i + 1) % around], d = at[(j + 1) * around + i];
+      tube.add_face(a, b, c);
+      tube.add_face(a, c, d);
+    }
+  }
+  return without_isolated_vertices(tube);
 }
 
 Mesh without_isolated_vertices(const Mesh& mesh) {

@@ -24,6 +24,10 @@ struct Cap {
 // as separate pieces inside the hole), with the vertices left unused removed.
 Mesh cut_around_islands(const Mesh& closed, const Cap& cut, const std::vector<Cap>& islands);
 
+// A tube of unit radius around the z axis, `around` vertices round and `along` rows of quads
+// 0.1 high, without rows [cut_begin, cut_end) (a tube cut in two), with no isolated vertices.
+Mesh tube_cut_in_two(int around, int along, int cut_begin, int cut_end);
+
 // A copy without isolated vertices; the others keep their order.
 Mesh without_isolated_vertices(const Mesh& mesh);
 
