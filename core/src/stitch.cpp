@@ -10,7 +10,9 @@
 #include <unordered_map>
 #include <vector>
 
+#include "available_cores.h"
 #include "boundary_points.h"
+#include "parallel_indices.h"
 #include "t_junctions.h"
 #include "vertex_link.h"
 #include "vertex_merge.h"
@@ -65,25 +67,40 @@ FlatLists points_within(const detail::BoundaryIndex& index, double tolerance,
   const std::size_t n = points.vertices.size();
   const std::size_t most = std::min(n, kMostPointsWithin + 1);
   crowded.assign(n, 0);
-  std::vector<std::pair<int, int>> pairs;
-  std::vector<std::size_t> nearest(most);
-  std::vector<double> squared(most);
-  std::vector<int> within;
-  for (std::size_t s = 0; s < n; ++s) {
-    const Point& at = points.mesh.point(points.vertices[s]);
-    const std::size_t found = index.tree.knnSearch(at.data(), most, nearest.data(), squared.data());
-    within.clear();
-    for (std::size_t k = 0; k < found; ++k) {
-      if ((points.mesh.point(points.vertices[nearest[k]]) - at).norm() <= tolerance) {
-        within.push_back(static_cast<int>(nearest[k]));
+  // The points in blocks on every core, each block's pairs in its points' order, the blocks then
+  // joined in order: the lists of one thread.
+  constexpr std::size_t kBlock = std::size_t{1} << 13;
+  std::vector<std::vector<std::pair<int, int>>> block_pairs((n + kBlock - 1) / kBlock);
+  detail::for_each_index(block_pairs.size(), detail::available_cores(), [&](std::size_t block) {
+    std::vector<std::size_t> nearest(most);
+    std::vector<double> squared(most);
+    std::vector<int> within;
+    auto& pairs = block_pairs[block];
+    for (std::size_t s = block * kBlock; s < std::min(n, (block + 1) * kBlock); ++s) {
+      const Point& at = points.mesh.point(points.vertices[s]);
+      const std::size_t found =
+          index.tree.knnSearch(at.data(), most, nearest.data(), squared.data());
+      within.clear();
+      for (std::size_t k = 0; k < found; ++k) {
+        if ((points.mesh.point(points.vertices[nearest[k]]) - at).norm() <= tolerance) {
+          within.push_back(static_cast<int>(nearest[k]));
+        }
       }
+      if (within.size() > kMostPointsWithin) {
+        crowded[s] = 1;
+        within.assign(1, static_cast<int>(s));
+      }
+      std::sort(within.begin(), within.end());  // the order of the point list, whatever the tree's
+      for (const int other : within) pairs.emplace_back(static_cast<int>(s), other);
     }
-    if (within.size() > kMostPointsWithin) {
-      crowded[s] = 1;
-      within.assign(1, static_cast<int>(s));
-    }
-    std::sort(within.begin(), within.end());  // the order of the point list, whatever the tree's
-    for (const int other : within) pairs.emplace_back(static_cast<int>(s), other);
+  });
+  std::size_t total = 0;
+  for (const auto& pairs : block_pairs) total += pairs.size();
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(total);
+  for (auto& block : block_pairs) {
+    pairs.insert(pairs.end(), block.begin(), block.end());
+    std::vector<std::pair<int, int>>().swap(block);
   }
   return flat_lists(n, pairs);
 }
