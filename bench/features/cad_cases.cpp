@@ -62,7 +62,11 @@ std::vector<CadCase> generated_cases() {
                    0.5});
   const Mesh step = make_step_block(8);
   cases.push_back({"step-concave", "L block, hole across the concave crease (270°)", step,
-                   Point(1.0, 0.55, 1.0), 0.4});
+                   Point(1.0, 0.5, 1.0), 0.3});
+  cases.push_back({"step-concave-wide",
+                   "L block, hole along the concave crease, its rim across the two convex creases "
+                   "next to the mixed corner",
+                   step, Point(1.0, 0.55, 1.0), 0.4});
   cases.push_back(
       {"step-corner", "L block, hole across a convex corner", step, Point(2.0, 1.0, 1.0), 0.4});
   cases.push_back({"step-mixed", "L block, concave crease meeting a face (mixed corner)", step,

@@ -43,6 +43,13 @@ std::size_t normals_cut(const CadCase& c, const quality::CutMesh& cut) {
   return normals.size();
 }
 
+CadCase case_named(const std::string& name) {
+  for (auto& c : generated_cases()) {
+    if (c.name == name) return c;
+  }
+  throw std::invalid_argument(name);
+}
+
 TEST(CadSet, MeshesAreClosedManifoldSpheres) {
   for (const auto& c : generated_cases()) {
     SCOPED_TRACE(c.name);
@@ -102,6 +109,20 @@ TEST(CadSet, EachCutIsOneSimpleLoopAcrossItsFeatures) {
   EXPECT_EQ(planes("box-edge"), 2u);
   EXPECT_EQ(planes("box-corner"), 3u);
   EXPECT_EQ(planes("step-concave"), 2u);
+  EXPECT_EQ(planes("step-concave-wide"), 2u);
+  // ... but its rim crosses the side face's two convex creases (x = 1 and z = 1 on y = 1) next
+  // to the corner (1, 1, 1), where they meet the concave one.
+  const CadCase wide = case_named("step-concave-wide");
+  const auto wide_cut = cut_case(wide);
+  ASSERT_TRUE(wide_cut);
+  int on_convex_creases = 0;
+  const auto wide_loops = find_holes(wide_cut->mesh);
+  for (const auto v : wide_loops.front().vertices) {
+    const Point p = wide.closed.point(v);
+    if (p[1] != 1.0) continue;
+    on_convex_creases += (p[0] == 1.0 && p[2] > 1.0) + (p[2] == 1.0 && p[0] > 1.0);
+  }
+  EXPECT_EQ(on_convex_creases, 2);
   EXPECT_EQ(planes("step-corner"), 3u);
   EXPECT_EQ(planes("step-mixed"), 3u);
 }
@@ -187,13 +208,6 @@ TEST(CadSet, RealCasesFindACreaseAndACorner) {
   EXPECT_EQ(on_faces(cases[0].center), 2);
   EXPECT_EQ(on_faces(cases[1].center), 3);
   for (const auto& c : cases) EXPECT_TRUE(cut_case(c).has_value());
-}
-
-CadCase case_named(const std::string& name) {
-  for (auto& c : generated_cases()) {
-    if (c.name == name) return c;
-  }
-  throw std::invalid_argument(name);
 }
 
 // The cut-away faces themselves as the fill, in the closed mesh, with the hole's loop.
