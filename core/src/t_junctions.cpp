@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <tuple>
 
 #include "holefill/obj_attributes.h"
@@ -99,6 +101,57 @@ void set_split_corners(Mesh& mesh, const ObjHandles& obj, VertexHandle a, Vertex
   }
 }
 
+// A ball around a stretch of an edge holding more boundary points than this is halved: the
+// ball around a long edge across a dense boundary holds points far from the edge, and looking at
+// each of them made the search quadratic (100,000 stacked slivers, each base's ball holding half
+// of all the apexes: over 300 s).
+constexpr std::size_t kPointsPerStretch = 32;
+// Stretches are halved at most this many times (a stretch of 2^-40 of the edge, or two
+// tolerances, is as short as a search needs).
+constexpr int kMostHalvings = 40;
+
+// A nanoflann result set: appends the points within a squared radius to `found`, at most `cap` + 1
+// of them (the search stops at the one over the cap).
+class FirstPointsWithin {
+ public:
+  FirstPointsWithin(double squared_radius, std::size_t cap, std::vector<std::size_t>& found)
+      : squared_radius_(squared_radius), cap_(cap), found_(found) {}
+  double worstDist() const { return squared_radius_; }
+  bool full() const { return true; }
+  bool addPoint(double squared, std::size_t index) {
+    if (squared < squared_radius_) {
+      found_.push_back(index);
+      ++count_;
+    }
+    return count_ <= cap_;
+  }
+
+ private:
+  double squared_radius_;
+  std::size_t cap_;
+  std::vector<std::size_t>& found_;
+  std::size_t count_ = 0;
+};
+
+// Appends to `near` the boundary points within `tolerance` of segment a-b (and maybe some more):
+// those in the ball around it, or, when it holds more than kPointsPerStretch, those near each
+// half. The work grows with the points near the segment, not with those in its ball.
+void points_near_segment(const BoundaryPointTree& tree, const Point& a, const Point& b,
+                         double tolerance, std::vector<std::size_t>& near, int halvings = 0) {
+  const double half = 0.5 * (b - a).norm();
+  const bool may_halve = half > 2.0 * tolerance && halvings < kMostHalvings;
+  const std::size_t before = near.size();
+  const double radius = half + tolerance;
+  FirstPointsWithin within(std::nextafter(radius * radius, INFINITY),
+                           may_halve ? kPointsPerStretch : SIZE_MAX, near);
+  const Point centre = (a + b) * 0.5;
+  tree.findNeighbors(within, centre.data(), nanoflann::SearchParams(32, 0.0f, false));
+  if (near.size() - before <= kPointsPerStretch || !may_halve) return;
+  near.resize(before);
+  points_near_segment(tree, a, centre, tolerance, near, halvings + 1);
+  points_near_segment(tree, centre, b, tolerance, near, halvings + 1);
+}
+
 }  // namespace
 
 std::vector<TJunction> find_t_junctions(const Mesh& mesh, const BoundaryIndex& index,
@@ -107,7 +160,7 @@ std::vector<TJunction> find_t_junctions(const Mesh& mesh, const BoundaryIndex& i
   const BoundaryPointTree& tree = index.tree;
   std::vector<TJunction> junctions;
   if (points.vertices.empty()) return junctions;
-  std::vector<std::pair<std::size_t, double>> found;
+  std::vector<std::size_t> found;
   for (const auto h : mesh.halfedges()) {
     if (!mesh.is_boundary(h)) continue;
     const VertexHandle from = mesh.from_vertex_handle(h), to = mesh.to_vertex_handle(h);
@@ -117,9 +170,12 @@ std::vector<TJunction> find_t_junctions(const Mesh& mesh, const BoundaryIndex& i
     if (std::binary_search(with_partner.begin(), with_partner.end(), h.idx())) {
       continue;  // most seams' edges
     }
-    points_near(tree, (a + b) * 0.5, 0.5 * length + tolerance, found);
+    found.clear();
+    points_near_segment(tree, a, b, tolerance, found);
+    std::sort(found.begin(), found.end());  // a point near both halves is listed twice
+    found.erase(std::unique(found.begin(), found.end()), found.end());
     const std::size_t first = junctions.size();
-    for (const auto& [index, squared] : found) {
+    for (const std::size_t index : found) {
       const VertexHandle v = points.vertices[index];
       const Point& p = mesh.point(v);
       if (v == from || v == to || (p - a).norm() <= tolerance || (p - b).norm() <= tolerance) {

@@ -66,5 +66,29 @@ TEST(StitchCost, WeldingAndTheWholePreparationStayLinearWhateverTheTolerance) {
   }
 }
 
+// N lone slivers one above the other, each a unit long base under an apex at its middle: the
+// ball around each base holds about half of all apexes (none within the tolerance of any base).
+Mesh stacked_slivers(int n) {
+  Mesh mesh;
+  constexpr double kStep = 1e-5, kHeight = 0.005 + 0.5 * kStep;
+  for (int i = 0; i < n; ++i) {
+    const double y = i * kStep;
+    mesh.add_face(mesh.add_vertex(Point(0.0, y, 0.0)), mesh.add_vertex(Point(1.0, y, 0.0)),
+                  mesh.add_vertex(Point(0.5, y + kHeight, 0.0)));
+  }
+  return mesh;
+}
+
+// The T-junction search looks at about as many points as lie near each boundary edge: it looked at
+// every point in the ball around the edge, N^2 / 2 on these slivers.
+TEST(StitchCost, LongEdgesAcrossADenseBoundaryAreSearchedAlongTheirLength) {
+  constexpr int kSlivers = 100000;
+  Mesh mesh = stacked_slivers(kSlivers);
+  const StitchReport report = stitch_borders(mesh);
+  EXPECT_EQ(report.t_junctions, 0u);
+  EXPECT_EQ(report.edges_stitched, 0u);
+  EXPECT_EQ(mesh.n_vertices(), 3u * kSlivers);
+}
+
 }  // namespace
 }  // namespace holefill::testing
