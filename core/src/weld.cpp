@@ -6,8 +6,10 @@
 #include <utility>
 #include <vector>
 
+#include "available_cores.h"
 #include "boundary_points.h"
 #include "holefill/components.h"
+#include "parallel_indices.h"
 #include "vertex_link.h"
 #include "vertex_merge.h"
 
@@ -58,29 +60,41 @@ std::vector<std::vector<VertexHandle>> touching_groups(const Mesh& mesh, double 
   const detail::BoundaryIndex index(mesh);
   const detail::BoundaryPoints& points = index.points;
   if (points.vertices.size() < 2) return {};
+  // The pairs within the tolerance, found in blocks of points on every core and taken in the
+  // points' order, so that the groups are those of one thread.
+  const std::size_t most = std::min(points.vertices.size(), kMostAtOnePosition + 1);
+  constexpr std::size_t kBlock = std::size_t{1} << 13;
+  const std::size_t n = points.vertices.size();
+  std::vector<std::vector<std::pair<VertexHandle, VertexHandle>>> block_pairs((n + kBlock - 1) /
+                                                                              kBlock);
+  detail::for_each_index(block_pairs.size(), detail::available_cores(), [&](std::size_t block) {
+    std::vector<std::size_t> nearest(most);
+    std::vector<double> squared(most);
+    for (std::size_t s = block * kBlock; s < std::min(n, (block + 1) * kBlock); ++s) {
+      const VertexHandle a = points.vertices[s];
+      const std::size_t found =
+          index.tree.knnSearch(mesh.point(a).data(), most, nearest.data(), squared.data());
+      const auto within = [&](std::size_t k) {
+        return (mesh.point(points.vertices[nearest[k]]) - mesh.point(a)).norm() <= tolerance;
+      };
+      // Crowded: more than a few points within the tolerance (a tolerance far above the edge
+      // length) is no place where holes touch; it is left apart.
+      if (found > kMostAtOnePosition && within(kMostAtOnePosition)) continue;
+      for (std::size_t k = 0; k < found; ++k) {
+        if (!within(k)) continue;
+        const VertexHandle b = points.vertices[nearest[k]];
+        if (b.idx() <= a.idx() || mesh.find_halfedge(a, b).is_valid()) continue;
+        block_pairs[block].emplace_back(a, b);
+      }
+    }
+  });
   // The pieces only for the pairs that need them: most meshes have none, and finding the pieces
   // of a 1.4M-face mesh was a tenth of filling it.
   std::optional<MeshPieces> pieces;
   detail::VertexGroups groups(mesh.n_vertices());
-  const std::size_t most = std::min(points.vertices.size(), kMostAtOnePosition + 1);
-  std::vector<std::size_t> nearest(most);
-  std::vector<double> squared(most);
   bool any = false;
-  for (std::size_t s = 0; s < points.vertices.size(); ++s) {
-    const VertexHandle a = points.vertices[s];
-    const std::size_t found =
-        index.tree.knnSearch(mesh.point(a).data(), most, nearest.data(), squared.data());
-    const auto within = [&](std::size_t k) {
-      return (mesh.point(points.vertices[nearest[k]]) - mesh.point(a)).norm() <= tolerance;
-    };
-    // Crowded: more than a few points within the tolerance (a tolerance far above the edge length)
-    // is no place where holes touch; it is left apart.
-    if (found > kMostAtOnePosition && within(kMostAtOnePosition)) continue;
-    for (std::size_t k = 0; k < found; ++k) {
-      if (!within(k)) continue;
-      const VertexHandle b = points.vertices[nearest[k]];
-      if (b.idx() <= a.idx()) continue;
-      if (mesh.find_halfedge(a, b).is_valid()) continue;
+  for (const auto& pairs : block_pairs) {
+    for (const auto& [a, b] : pairs) {
       if (!pieces) pieces = mesh_pieces(mesh);
       if (piece_of(mesh, *pieces, a) != piece_of(mesh, *pieces, b)) continue;
       groups.join(a.idx(), b.idx());
