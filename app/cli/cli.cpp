@@ -53,6 +53,7 @@ struct CommandLine {
     add_format_option(*info, info_arguments.format);
     add_preparation_options(*info, info_arguments.preparation);
     add_islands_option(*info, info_arguments.islands);
+    add_feature_angle_option(*info, info_arguments.features);
     fill = app.add_subcommand("fill", "fill holes, write the result, print a table");
     add_fill_options(*fill, fill_arguments);
     help = app.add_subcommand("help", "this text, or a command's options");

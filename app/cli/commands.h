@@ -34,6 +34,7 @@ struct InfoArguments {
   bool json = false;
   PreparationChoice preparation;  // stitching, small pieces, borders (islands from `islands`)
   std::string islands = "on";     // --islands: "off" skips island detection
+  FeatureOptions features;        // which sharp features entering a hole are listed
 };
 
 int run_info(const InfoArguments& arguments, const Streams& streams);

@@ -68,6 +68,7 @@ void add_triangulation_options(CLI::App& command, FillArguments& a) {
                   "0: always the full search, which takes at most " +
                       std::to_string(kMaxFullSearchEdges) + " edges")
       ->transform(whole_number(0, kNoLimit));
+  add_feature_angle_option(command, a.options.features);
 }
 
 void add_refinement_and_smoothing_options(CLI::App& command, FillArguments& a) {
@@ -129,6 +130,14 @@ void add_selection_options(CLI::App& command, FillArguments& a) {
 }
 
 }  // namespace
+
+void add_feature_angle_option(CLI::App& command, FeatureOptions& features) {
+  command
+      .add_option("--feature-angle", features.angle_degrees,
+                  "continue sharp edges (faces meeting at more than this many\n"
+                  "degrees) through holes: creases and corners; 0: off")
+      ->check(real_number(0.0, 180.0));
+}
 
 void add_format_option(CLI::App& command, std::string& format) {
   command.add_option("--format", format, "the format of - (standard input or output)")

@@ -52,6 +52,9 @@ struct OptionHelp {
 };
 std::vector<OptionHelp> fill_choice_help();
 
+// Adds --feature-angle (features.h), the dihedral angle above which an edge is a feature.
+void add_feature_angle_option(CLI::App& command, FeatureOptions& features);
+
 // Adds --format, the format of a mesh read from standard input or written to standard output.
 void add_format_option(CLI::App& command, std::string& format);
 

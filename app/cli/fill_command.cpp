@@ -44,6 +44,10 @@ FillCounts report_problems(const std::vector<HoleFill>& fills, const std::string
       err << prefix << fill.hole_id << ": " << fill.attributes_note << "\n";
     if (!fill.islands_note.empty())
       err << prefix << fill.hole_id << ": " << fill.islands_note << "\n";
+    // Features that matched but could not be followed; lines without partners (most often a
+    // scan's noise, on organic meshes) are in the report only.
+    if (!fill.features_note.empty() && fill.features.continued())
+      err << prefix << fill.hole_id << ": " << fill.features_note << "\n";
     if (fill.failed()) {
       err << prefix << fill.hole_id << " not filled: " << fill.failure
           << (fill.refused_intersections ? "; --allow-intersections keeps it" : "") << "\n";

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "holefill/features.h"
 #include "holefill/holes.h"
 #include "holefill/islands.h"
 #include "holefill/stats.h"
@@ -41,7 +42,7 @@ int run_info(const InfoArguments& a, const Streams& streams) {
   const auto& holes = prepared.holes;
   std::ostream& out = streams.out;
   if (a.json) {
-    out << json_info(a.input, mesh, prepared);
+    out << json_info(a.input, mesh, prepared, a.features);
     return kOk;
   }
   const SurfaceCounts counts = surface_counts(mesh);
@@ -57,7 +58,10 @@ int run_info(const InfoArguments& a, const Streams& streams) {
     const Hole& hole = holes[i];
     out << std::setw(6) << hole.id << ' ' << std::setw(15) << hole.size() << ' ' << std::setw(11)
         << format("%.6g", hole.perimeter) << "  "
-        << joined_note(loop_note(hole, prepared.classes[i]), island_note(hole, islands)) << "\n";
+        << joined_note(
+               joined_note(loop_note(hole, prepared.classes[i]), island_note(hole, islands)),
+               features_summary(find_hole_features(mesh, hole, a.features)))
+        << "\n";
   }
   std::set<std::string> notes(islands.note.begin(), islands.note.end());
   notes.erase("");

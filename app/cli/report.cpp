@@ -23,6 +23,7 @@ Json options_json(const FillOptions& o) {
           {"tau", o.refine.tau},
           {"remesh", o.refine.remesh},
           {"islands", o.islands.detect ? "on" : "off"},
+          {"feature_angle_deg", o.features.angle_degrees},
           {"smooth", o.smooth.method == SmoothMethod::Fair ? "fair" : "umbrella"},
           {"fair_order", o.smooth.fair.order},
           {"smooth_iterations", o.smooth.iterations},
@@ -30,6 +31,31 @@ Json options_json(const FillOptions& o) {
           {"last_stage", to_string(o.last_stage)},
           {"allow_intersections", o.allow_intersections},
           {"threads", o.threads}};
+}
+
+// The feature lines entering a hole and how they continue (null when none enter).
+Json features_json(const HoleFeatures& features, const std::string& note) {
+  if (features.lines.empty()) return nullptr;
+  Json junctions = Json::array();
+  for (const auto& junction : features.junctions) {
+    Json entries = Json::array();
+    std::size_t new_vertices = junction.corner ? 1 : 0;
+    for (const int l : junction.lines) entries.push_back(features.lines[l].entry);
+    for (const auto& path : junction.paths) new_vertices += path.size();
+    Json entry{{"kind", junction.corner ? "corner" : "crease"},
+               {"entries", std::move(entries)},
+               {"new_vertices", new_vertices}};
+    if (junction.corner) {
+      const Point& p = junction.corner_point;
+      entry["corner_point"] = {p[0], p[1], p[2]};
+    }
+    junctions.push_back(std::move(entry));
+  }
+  Json entry{{"lines", features.lines.size()},
+             {"continued", features.continued() && note.empty()},
+             {"junctions", std::move(junctions)}};
+  if (!note.empty()) entry["note"] = note;
+  return entry;
 }
 
 Json fill_json(const HoleFill& fill) {
@@ -44,6 +70,9 @@ Json fill_json(const HoleFill& fill) {
   if (!fill.smoothing_note.empty()) entry["smoothing_note"] = fill.smoothing_note;
   if (!fill.attributes_note.empty()) entry["attributes_note"] = fill.attributes_note;
   if (!fill.islands_note.empty()) entry["islands_note"] = fill.islands_note;
+  if (!fill.features.lines.empty()) {
+    entry["features"] = features_json(fill.features, fill.features_note);
+  }
   entry["self_intersections"] = fill.self_intersections;
   if (fill.refused_intersections > 0) entry["refused_intersections"] = fill.refused_intersections;
   const IntersectionAvoidance& avoidance = fill.avoidance;
@@ -131,8 +160,19 @@ std::string json_report(const ReportInput& in) {
   return text_of(document);
 }
 
-std::string json_info(const std::string& input_path, const Mesh& mesh,
-                      const PreparedMesh& prepared) {
+std::string features_summary(const HoleFeatures& features) {
+  const std::size_t n = features.lines.size();
+  if (n == 0) return {};
+  std::string kinds;
+  for (const auto& junction : features.junctions) {
+    kinds += std::string(kinds.empty() ? "" : "+") + (junction.corner ? "corner" : "crease");
+  }
+  return "features: " + std::to_string(n) + (n == 1 ? " line, " : " lines, ") +
+         (features.continued() ? kinds : "not continued");
+}
+
+std::string json_info(const std::string& input_path, const Mesh& mesh, const PreparedMesh& prepared,
+                      const FeatureOptions& features) {
   const IslandMap& islands = prepared.islands;
   Json list = Json::array();
   for (std::size_t i = 0; i < prepared.holes.size(); ++i) {
@@ -145,6 +185,8 @@ std::string json_info(const std::string& input_path, const Mesh& mesh,
                {"islands", islands.islands[hole.id]}};
     if (islands.outer[hole.id] >= 0) entry["island_of"] = islands.outer[hole.id];
     if (!islands.note[hole.id].empty()) entry["islands_note"] = islands.note[hole.id];
+    const HoleFeatures found = find_hole_features(mesh, hole, features);
+    if (!found.lines.empty()) entry["features"] = features_json(found, found.note);
     list.push_back(std::move(entry));
   }
   const SurfaceCounts counts = surface_counts(mesh);

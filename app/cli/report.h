@@ -25,8 +25,13 @@ struct ReportInput {
 // The report as a JSON document (ending in a newline).
 std::string json_report(const ReportInput& input);
 
-// What `holefill info --json` prints for `mesh` (read from `input_path`) and its loops.
-std::string json_info(const std::string& input_path, const Mesh& mesh,
-                      const PreparedMesh& prepared);
+// What `holefill info --json` prints for `mesh` (read from `input_path`) and its loops, with the
+// sharp features entering each hole under `features`.
+std::string json_info(const std::string& input_path, const Mesh& mesh, const PreparedMesh& prepared,
+                      const FeatureOptions& features = {});
+
+// One line on the features entering a hole: "features: crease", "features: 3 lines, corner",
+// "features: 1 line, not continued"; empty when none enter.
+std::string features_summary(const HoleFeatures& features);
 
 }  // namespace holefill::cli

@@ -3,6 +3,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <unordered_map>
 #include <vector>
@@ -32,9 +33,21 @@ struct Region {
   std::vector<int> ring;
   std::unordered_map<int, int> index;  // vertex idx -> position in `vertices`
   std::size_t unknowns = 0;
+  // Fixed vertices at the edge of a restricted surface (a face of theirs is not on it): their
+  // Laplacian would be one-sided, pulling the patch sideways, so they hold positions only.
+  std::vector<bool> cut;
 };
 
-Region gather_region(const Mesh& mesh, const std::vector<VertexHandle>& new_vertices, int order) {
+// The faces the operator may use (fair_patch_within); null: all.
+using Surface = std::function<bool(FaceHandle)>;
+
+// Whether the edge of halfedge h borders a face of the surface.
+bool on_surface(const Mesh& mesh, HalfedgeHandle h, const Surface* surface) {
+  return !surface || (*surface)(mesh.face_handle(h)) || (*surface)(mesh.opposite_face_handle(h));
+}
+
+Region gather_region(const Mesh& mesh, const std::vector<VertexHandle>& new_vertices, int order,
+                     const Surface* surface) {
   Region region;
   auto add = [&](VertexHandle v, int ring) {
     if (region.index.emplace(v.idx(), static_cast<int>(region.vertices.size())).second) {
@@ -48,9 +61,21 @@ Region gather_region(const Mesh& mesh, const std::vector<VertexHandle>& new_vert
   for (int ring = 1; ring <= order; ++ring) {
     const std::size_t ring_end = region.vertices.size();
     for (std::size_t i = ring_begin; i < ring_end; ++i) {
-      for (const auto w : mesh.vv_range(region.vertices[i])) add(w, ring);
+      if (!surface) {
+        for (const auto w : mesh.vv_range(region.vertices[i])) add(w, ring);
+        continue;
+      }
+      for (const auto h : mesh.voh_range(region.vertices[i])) {
+        if (on_surface(mesh, h, surface)) add(mesh.to_vertex_handle(h), ring);
+      }
     }
     ring_begin = ring_end;
+  }
+  region.cut.assign(region.vertices.size(), false);
+  for (std::size_t i = region.unknowns; surface && i < region.vertices.size(); ++i) {
+    for (const auto f : mesh.vf_range(region.vertices[i])) {
+      if (!(*surface)(f)) region.cut[i] = true;
+    }
   }
   return region;
 }
@@ -66,9 +91,10 @@ double clamped_cotangent(const Point& corner, const Point& a, const Point& b) {
   return cosine / sine;
 }
 
-// Half the cotangent of the angle opposite halfedge h in its face; 0 on a boundary halfedge.
-double half_cotangent_opposite(const Mesh& mesh, HalfedgeHandle h) {
-  if (mesh.is_boundary(h)) return 0.0;
+// Half the cotangent of the angle opposite halfedge h in its face; 0 on a boundary halfedge and
+// off the surface.
+double half_cotangent_opposite(const Mesh& mesh, HalfedgeHandle h, const Surface* surface) {
+  if (mesh.is_boundary(h) || (surface && !(*surface)(mesh.face_handle(h)))) return 0.0;
   const Point& corner = mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
   return 0.5 * clamped_cotangent(corner, mesh.point(mesh.from_vertex_handle(h)),
                                  mesh.point(mesh.to_vertex_handle(h)));
@@ -78,9 +104,9 @@ double half_cotangent_opposite(const Mesh& mesh, HalfedgeHandle h) {
 // locally Delaunay and is kept so: clamping it to 0 would lose linear precision (a flat patch
 // would slide within its plane), and K stays positive semi-definite without it, being the
 // finite-element stiffness matrix of the piecewise-linear surface.
-double cotangent_weight(const Mesh& mesh, HalfedgeHandle h) {
-  return half_cotangent_opposite(mesh, h) +
-         half_cotangent_opposite(mesh, mesh.opposite_halfedge_handle(h));
+double cotangent_weight(const Mesh& mesh, HalfedgeHandle h, const Surface* surface) {
+  return half_cotangent_opposite(mesh, h, surface) +
+         half_cotangent_opposite(mesh, mesh.opposite_halfedge_handle(h), surface);
 }
 
 // The mixed Voronoi area of vertex p in triangle (p, q, r) (Meyer, Desbrun, Schroeder & Barr
@@ -99,10 +125,10 @@ double mixed_area(const Point& p, const Point& q, const Point& r) {
   return ((r - p).sqrnorm() * cot_q + (q - p).sqrnorm() * cot_r) / 8.0;
 }
 
-double vertex_area(const Mesh& mesh, VertexHandle v) {
+double vertex_area(const Mesh& mesh, VertexHandle v, const Surface* surface) {
   double area = 0.0;
   for (const auto h : mesh.voh_range(v)) {
-    if (mesh.is_boundary(h)) continue;
+    if (mesh.is_boundary(h) || (surface && !(*surface)(mesh.face_handle(h)))) continue;
     area += mixed_area(mesh.point(v), mesh.point(mesh.to_vertex_handle(h)),
                        mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h))));
   }
@@ -118,19 +144,21 @@ struct Operator {
   std::string problem;
 };
 
-Operator build_operator(const Mesh& mesh, const Region& region, const FairOptions& options) {
+Operator build_operator(const Mesh& mesh, const Region& region, const FairOptions& options,
+                        const Surface* surface) {
   Operator op;
   const int n = static_cast<int>(region.vertices.size());
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::VectorXd mass = Eigen::VectorXd::Zero(n);
   std::vector<int> rows;
   for (int i = 0; i < n; ++i) {
-    if (region.ring[i] >= options.order) continue;
+    if (region.ring[i] >= options.order || region.cut[i]) continue;
     rows.push_back(i);
     const VertexHandle v = region.vertices[i];
     double diagonal = 0.0;
     for (const auto h : mesh.voh_range(v)) {
-      const double weight = options.cotangent_weights ? cotangent_weight(mesh, h) : 1.0;
+      if (!on_surface(mesh, h, surface)) continue;
+      const double weight = options.cotangent_weights ? cotangent_weight(mesh, h, surface) : 1.0;
       entries.emplace_back(i, region.index.at(mesh.to_vertex_handle(h).idx()), -weight);
       diagonal += weight;
     }
@@ -139,7 +167,7 @@ Operator build_operator(const Mesh& mesh, const Region& region, const FairOption
       return op;
     }
     entries.emplace_back(i, i, diagonal);
-    mass[i] = options.cotangent_weights ? vertex_area(mesh, v) : diagonal;
+    mass[i] = options.cotangent_weights ? vertex_area(mesh, v, surface) : diagonal;
   }
   double mean_mass = 0.0;
   for (const int i : rows) mean_mass += mass[i];
@@ -161,7 +189,7 @@ Operator build_operator(const Mesh& mesh, const Region& region, const FairOption
 // Builds the operator on the mesh's current geometry and solves; on success writes the unknowns'
 // new positions into the mesh. Returns the problem otherwise, the mesh unchanged.
 std::string solve(Mesh& mesh, const Region& region, const FairOptions& options,
-                  FairResult& result) {
+                  const Surface* surface, FairResult& result) {
   const int n = static_cast<int>(region.vertices.size());
   const int unknowns = static_cast<int>(region.unknowns), fixed = n - unknowns;
   Eigen::MatrixXd positions(n, 3);
@@ -171,7 +199,7 @@ std::string solve(Mesh& mesh, const Region& region, const FairOptions& options,
   }
   if (!positions.allFinite()) return "non-finite vertex coordinates in or around the patch";
 
-  const Operator op = build_operator(mesh, region, options);
+  const Operator op = build_operator(mesh, region, options, surface);
   if (!op.problem.empty()) return op.problem;
   // K (M^-1 K)^(k-1): symmetric positive definite on the unknowns' block.
   SparseMatrix system = op.stiffness;
@@ -209,9 +237,9 @@ std::string solve(Mesh& mesh, const Region& region, const FairOptions& options,
   return {};
 }
 
-}  // namespace
-
-FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options) {
+// fair_patch, on the faces of `surface` only (null: every face).
+FairResult fair_on(Mesh& mesh, const Patch& patch, const FairOptions& options,
+                   const Surface* surface) {
   FairResult result;
   if (options.order < 1 || options.order > 3) {
     result.problem = "fairing order must be 1, 2 or 3, got " + std::to_string(options.order);
@@ -224,7 +252,7 @@ FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options
       return result;
     }
   }
-  const Region region = gather_region(mesh, patch.new_vertices, options.order);
+  const Region region = gather_region(mesh, patch.new_vertices, options.order, surface);
   result.unknowns = region.unknowns;
   result.fixed_vertices = region.vertices.size() - region.unknowns;
   if (region.unknowns == 0) {
@@ -235,9 +263,20 @@ FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options
     result.problem = "no fixed vertices around the patch to continue";
     return result;
   }
-  result.problem = solve(mesh, region, options, result);
+  result.problem = solve(mesh, region, options, surface, result);
   result.solved = result.problem.empty();
   return result;
+}
+
+}  // namespace
+
+FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options) {
+  return fair_on(mesh, patch, options, nullptr);
+}
+
+FairResult fair_patch_within(Mesh& mesh, const Patch& patch, const FairOptions& options,
+                             const std::function<bool(FaceHandle)>& surface) {
+  return fair_on(mesh, patch, options, &surface);
 }
 
 }  // namespace holefill

@@ -1,10 +1,13 @@
 #include "holefill/fill.h"
 
 #include <algorithm>
+#include <functional>
 #include <new>
 
 #include "advance_unscaled.h"
 #include "avoid_intersections.h"
+#include "feature_fill.h"
+#include "feature_regions.h"
 #include "hole_triangulation.h"
 #include "holefill/attributes.h"
 #include "holefill/errors.h"
@@ -30,16 +33,29 @@ std::size_t count_intersections(const Mesh& mesh, const Patch& patch,
 // Each runs one stage on fill.patch and keeps it only when it made no degenerate triangle and no
 // new intersection; advance_with alone moves the patch's stage on.
 
-// The smoothing stage: the paper's umbrella operator, or fairing with umbrella as the fallback.
-void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options) {
+// Smooths `patch` (the fill's, or one region of it between creases, fairing then on `surface`
+// only): the paper's umbrella operator, or fairing with umbrella as the fallback.
+void smooth_region(Mesh& mesh, const Patch& patch, HoleFill& fill, const SmoothOptions& options,
+                   const std::function<bool(FaceHandle)>* surface) {
   if (options.method == SmoothMethod::Fair) {
-    const FairResult result = fair_patch(mesh, fill.patch, options.fair);
+    const FairResult result = surface ? fair_patch_within(mesh, patch, options.fair, *surface)
+                                      : fair_patch(mesh, patch, options.fair);
     if (result.solved) return;
     fill.smoothing_note = "fairing fell back to umbrella smoothing: " + result.problem;
   }
   SmoothOptions umbrella = options;
   umbrella.method = SmoothMethod::Umbrella;
-  smooth_patch(mesh, fill.patch, umbrella);
+  smooth_patch(mesh, patch, umbrella);
+}
+
+// The smoothing stage, on the whole patch or region by region between its creases.
+void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options, double feature_angle) {
+  if (fill.creases.empty()) return smooth_region(mesh, fill.patch, fill, options, nullptr);
+  for (const Patch& region : detail::crease_regions(mesh, fill.patch, fill.creases)) {
+    const auto surface =
+        detail::same_side_faces(mesh, region, fill.creases, feature_angle, options.fair.order);
+    smooth_region(mesh, region, fill, options, &surface);
+  }
 }
 
 // The intersecting pairs that the patch has by the search's check, and, where the patch must be
@@ -102,7 +118,9 @@ void refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
     std::string problem;
     fill.times.refine_seconds += timed([&] {
       try {
-        fill.refinement = refine_patch(mesh, fill.patch, refine);
+        fill.refinement = fill.creases.empty() ? refine_patch(mesh, fill.patch, refine)
+                                               : detail::refine_between_creases(
+                                                     mesh, fill.patch, fill.creases, refine);
       } catch (const std::bad_alloc&) {
         problem = "not enough memory";
       }
@@ -147,7 +165,8 @@ void smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
   std::size_t intersections = 0;
   SmoothOptions smoothing = options.smooth;
   if (fill.fair_rescue) smoothing.method = SmoothMethod::Fair;
-  fill.times.smooth_seconds = timed([&] { smooth(mesh, fill, smoothing); });
+  fill.times.smooth_seconds =
+      timed([&] { smooth(mesh, fill, smoothing, options.features.angle_degrees); });
   fill.times.check_seconds +=
       timed([&] { problem = stage_problem(mesh, fill, index, options, intersections); });
   if (problem.empty()) {
@@ -211,6 +230,7 @@ bool may_stay(Mesh& mesh, HoleFill& fill, const FillOptions& options,
   const detail::StageUndo without_patch(mesh, Patch{});
   without_patch.undo(mesh, fill.patch);
   fill.patch = Patch{};
+  fill.creases.clear();
   fill.self_intersections = 0;
   fill.refused_intersections = pairs;
   fill.failure = "every patch tried intersects the mesh (the best in " + std::to_string(pairs) +
@@ -227,8 +247,11 @@ StageRun advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOp
   if (fill.failed()) return StageRun::Failed;
   switch (fill.stage()) {
     case Stage::Original:
-      // The patch is born Stage::Triangulated.
-      if (!triangulate_stage(mesh, hole, fill, options, plan, index)) return StageRun::Failed;
+      // The patch is born Stage::Triangulated, along the hole's sharp features when they continue.
+      if (!detail::feature_triangulate_stage(mesh, hole, fill, options, index) &&
+          !triangulate_stage(mesh, hole, fill, options, plan, index)) {
+        return StageRun::Failed;
+      }
       break;
     case Stage::Triangulated:
       refine_stage(mesh, fill, options, index);

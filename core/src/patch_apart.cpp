@@ -118,6 +118,17 @@ bool take_patch(Surroundings& copy, std::size_t old_faces, PatchApart& apart) {
     apart.boundary_scales.push_back(local.property(tags.scale, v));
     v = VertexHandle(copy.vertices[static_cast<std::size_t>(v.idx())]);
   }
+  // The feature lines and continued creases name the copy's vertices too (creases as corners).
+  for (auto& line : apart.fill.features.lines) {
+    line.vertex = VertexHandle(copy.vertices[static_cast<std::size_t>(line.vertex.idx())]);
+  }
+  for (auto& chain : apart.fill.creases) {
+    for (auto& v : chain) {
+      const auto i = static_cast<std::size_t>(v.idx());
+      v = VertexHandle(i < old_vertices ? copy.vertices[i]
+                                        : -1 - static_cast<int>(i - old_vertices));
+    }
+  }
   for (auto& f : patch.faces) f = FaceHandle(f.idx() - static_cast<int>(old_faces));
   for (auto& v : patch.new_vertices) v = VertexHandle(v.idx() - static_cast<int>(old_vertices));
   return true;
@@ -198,6 +209,9 @@ bool splice_patch(Mesh& mesh, PatchApart& apart) {
   }
   for (auto& f : patch.faces) f = faces[static_cast<std::size_t>(f.idx())];
   for (auto& v : patch.new_vertices) v = vertices[static_cast<std::size_t>(v.idx())];
+  for (auto& chain : apart.fill.creases) {
+    for (auto& v : chain) v = vertex(v.idx());
+  }
   return true;
 }
 

@@ -6,6 +6,7 @@
 #include "delaunay_swap.h"
 #include "flat_patch.h"
 #include "patch_face_set.h"
+#include "refine_scaled.h"
 
 namespace holefill {
 namespace {
@@ -115,9 +116,13 @@ std::size_t relax_patch_edges(Mesh& mesh, const Patch& patch) {
 }
 
 RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options) {
+  assign_boundary_scales(mesh, patch);
+  return detail::refine_with_scales(mesh, patch, options);
+}
+
+RefineResult detail::refine_with_scales(Mesh& mesh, Patch& patch, const RefineOptions& options) {
   RefineResult result;
   PatchTags tags(mesh);
-  assign_boundary_scales(mesh, patch);
   result.vertex_cap = vertex_cap(mesh, patch, options.max_density);
   // The splits and swaps run on the patch's own arrays; the mesh changes once, at the end.
   detail::FlatPatch flat(mesh, patch, tags.scale);

@@ -39,6 +39,7 @@ const std::vector<OptionName> kOptionNames{
     {"holes", "--holes", Kind::Value, "list[int] | None"},
     {"max_boundary", "--max-boundary", Kind::Value, "int"},
     {"islands", "--islands", Kind::OnOff, "bool"},
+    {"feature_angle", "--feature-angle", Kind::Value, "float"},
     {"bridge", "--bridge", Kind::Pairs, "list[tuple[int, int]]"},
     {"stage", "--stage", Kind::Value, "str"},
     {"stitch", "--no-stitch", Kind::NotFlag, "bool"},
@@ -152,6 +153,7 @@ py::dict option_defaults() {
   defaults["smooth_step"] = o.smooth.step;
   defaults["max_boundary"] = a.selection.max_boundary_edges;
   defaults["islands"] = o.islands.detect;
+  defaults["feature_angle"] = o.features.angle_degrees;
   defaults["bridge"] = py::list();
   defaults["stage"] = a.stage;
   defaults["stitch"] = a.preparation.stitch;

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 #include "holefill/mesh.h"
@@ -39,5 +40,12 @@ struct FairResult {
 // Moves only patch.new_vertices. Leaves the mesh unchanged when the system cannot be solved
 // (order outside 1..3, non-finite or degenerate geometry, a singular or ill-conditioned system).
 FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options = {});
+
+// fair_patch on the surface made of the faces `surface` accepts (the patch's own among them):
+// the rings held fixed grow only across edges of those faces, and the operator sees only them,
+// as if the mesh ended there. For a patch that must not feel the surface beyond a sharp edge
+// (a region between continued creases, features.h).
+FairResult fair_patch_within(Mesh& mesh, const Patch& patch, const FairOptions& options,
+                             const std::function<bool(FaceHandle)>& surface);
 
 }  // namespace holefill

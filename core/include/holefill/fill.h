@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "holefill/bridge.h"
+#include "holefill/features.h"
 #include "holefill/holes.h"
 #include "holefill/islands.h"
 #include "holefill/mesh.h"
@@ -26,6 +27,9 @@ struct FillOptions {
   Stage last_stage = Stage::Smoothed;  // fill_hole stops after this stage
   IslandOptions islands;               // fill_holes fills each hole with its islands (islands.h)
   JoinOptions join;                    // how loops filled together are joined (bridge.h)
+  // Sharp features continued through a hole (features.h): a hole alone (no islands, no bridge)
+  // whose feature lines all match is filled region by region between the continued creases.
+  FeatureOptions features;
   // Re-triangulate a hole whose best triangulation intersects the mesh or itself, forbidding the
   // triangles that do (IntersectionAvoidance). Off: the weight's best is always kept.
   bool avoid_intersections = true;
@@ -75,6 +79,15 @@ struct HoleFill {
   std::string refinement_note;  // e.g. why refinement was undone
   std::string attributes_note;  // what the patch could not be given, e.g. UVs across a seam
   std::string islands_note;     // why a loop inside the hole was filled apart (islands.h)
+  // The sharp features found entering the hole and how they continue (features.h), and, when
+  // lines were found but the fill does not follow them, why (the fill is then the paper's).
+  HoleFeatures features;
+  std::string features_note;
+  // The continued creases of the patch as vertex chains (an entry on the hole's boundary, the new
+  // vertices along the path, the other entry or the corner vertex); empty when the fill follows
+  // no feature. Their edges stay, and their vertices do not move, after triangulation: the
+  // regions between them are refined and smoothed each on its own.
+  std::vector<std::vector<VertexHandle>> creases;
   // Pairs (patch triangle, other triangle of the mesh or of the patch) that intersect other than
   // along shared vertices and edges, after the last stage run. Stages that would make a patch
   // that did not intersect the mesh intersect it are undone (and say so in their note).
