@@ -62,6 +62,14 @@ void add_options(CLI::App& app, Parsed& parsed) {
   app.add_flag("--compare-smoothing", c.compare_smoothing,
                "show umbrella (left) vs fair (right) instead")
       ->group(kScripted);
+  app.add_flag("--compare-features", c.compare_features,
+               "show the paper's fill (left) vs sharp features continued (right) instead")
+      ->group(kScripted);
+  app.add_option("--feature-angle", c.feature_angle,
+                 "sharp features: the dihedral angle above which an edge is one\n(degrees; 0 off)")
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str()
+      ->group(kScripted);
   app.add_option("--size", parsed.size, "window size")
       ->type_name("WxH")
       ->default_str(std::to_string(c.width) + "x" + std::to_string(c.height))
@@ -114,7 +122,11 @@ void complete_and_check(const CLI::App& app, Parsed& parsed) {
   for (const auto& name : parsed.stages) c.run.push_back(parse_stage(name));
   if (!parsed.size.empty()) parse_size(parsed.size, c);
   c.fair = c.fair || app.count("--fair-order") > 0;
-  c.compare = c.compare || c.compare_triangulation_only || c.compare_smoothing;
+  c.compare =
+      c.compare || c.compare_triangulation_only || c.compare_smoothing || c.compare_features;
+  if (c.compare_smoothing && c.compare_features) {
+    throw std::invalid_argument("--compare-smoothing and --compare-features exclude each other");
+  }
   c.report_frame_time = app.count("--frames") > 0;
   if (!c.run.empty() && !c.select_hole) throw std::invalid_argument("--run needs --select-hole");
   if (c.report_frame_time && c.screenshot.empty()) {

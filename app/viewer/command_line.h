@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "holefill/features.h"
 #include "holefill/patch.h"
 
 namespace holefill::viewer {
@@ -23,6 +24,8 @@ struct CommandLine {
   bool compare = false;
   bool compare_triangulation_only = false;
   bool compare_smoothing = false;  // umbrella | fair instead of liepa | maxmin
+  bool compare_features = false;   // without | with sharp features instead
+  double feature_angle = FeatureOptions{}.angle_degrees;  // FillOptions::features
   int width = 1280;
   int height = 800;
   std::filesystem::path save;        // set: after the actions, save the mesh here

@@ -26,15 +26,20 @@ Comparison make_comparison(const Mesh& mesh, const std::vector<const Hole*>& loo
     left.last_stage = right.last_stage = triangulation_only ? Stage::Triangulated : Stage::Smoothed;
     left.triangulate.weight = WeightKind::Liepa;
     right.triangulate.weight = WeightKind::MaxMin;
-  } else {
+  } else if (mode == CompareMode::Smoothing) {
     left.last_stage = right.last_stage = Stage::Smoothed;
     left.smooth.method = SmoothMethod::Umbrella;
     right.smooth.method = SmoothMethod::Fair;
+  } else {
+    left.last_stage = right.last_stage = Stage::Smoothed;
+    left.features.angle_degrees = 0.0;
+    if (right.features.angle_degrees <= 0.0) right.features = FeatureOptions{};
   }
-  comparison.left =
-      fill_side(mesh, loops, left, mode == CompareMode::Weights ? "liepa" : "umbrella");
-  comparison.right =
-      fill_side(mesh, loops, right, mode == CompareMode::Weights ? "maxmin" : "fair");
+  static constexpr const char* kLabels[][2] = {
+      {"liepa", "maxmin"}, {"umbrella", "fair"}, {"paper", "creases"}};
+  const auto labels = kLabels[static_cast<int>(mode)];
+  comparison.left = fill_side(mesh, loops, left, labels[0]);
+  comparison.right = fill_side(mesh, loops, right, labels[1]);
   return comparison;
 }
 

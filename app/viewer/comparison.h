@@ -10,7 +10,8 @@
 
 namespace holefill::viewer {
 
-enum class CompareMode { Weights, Smoothing };
+// The order of the panel's list.
+enum class CompareMode { Weights, Smoothing, Features };
 
 struct ComparisonSide {
   std::string label;    // what differs on this side: "liepa", "maxmin", "umbrella", "fair"
@@ -31,7 +32,8 @@ struct Comparison {
 // hole to bridge to; fill_joined_holes) on two copies of `mesh` with `options` but for what
 // `mode` compares. Weights: with triangulation_only, both stop after the triangulation stage.
 // Smoothing: both run every stage (the smoothing is what differs), with options.smooth's
-// fairing settings on the right. `loops` is not empty.
+// fairing settings on the right. Features: every stage, without sharp features on the left and
+// with options.features (its default threshold when off) on the right. `loops` is not empty.
 Comparison make_comparison(const Mesh& mesh, const std::vector<const Hole*>& loops,
                            const FillOptions& options, CompareMode mode, bool triangulation_only);
 

@@ -8,6 +8,7 @@ struct DisplayOptions {
   bool wireframe = true;
   bool flat = false;
   bool patch_vertices = true;
+  bool feature_lines = true;  // the selected hole's sharp features and their continuations
 };
 
 }  // namespace holefill::viewer

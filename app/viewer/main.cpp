@@ -23,15 +23,14 @@ namespace {
 
 // Carries out the command line's actions on the session; false (with a message) on failure.
 bool run_script(const hv::CommandLine& command, hv::Session& session) {
-  if (command.remesh || command.fair) {
-    holefill::FillOptions options = session.options();
-    options.refine.remesh = options.refine.remesh || command.remesh;
-    if (command.fair) {
-      options.smooth.method = holefill::SmoothMethod::Fair;
-      options.smooth.fair.order = command.fair_order;
-    }
-    session.set_options(options);
+  holefill::FillOptions options = session.options();
+  options.refine.remesh = options.refine.remesh || command.remesh;
+  if (command.fair) {
+    options.smooth.method = holefill::SmoothMethod::Fair;
+    options.smooth.fair.order = command.fair_order;
   }
+  options.features.angle_degrees = command.feature_angle;
+  if (options != session.options()) session.set_options(options);
   if (command.select_hole) {
     if (*command.select_hole < 0 ||
         *command.select_hole >= static_cast<int>(session.holes().size())) {
@@ -59,8 +58,9 @@ bool run_script(const hv::CommandLine& command, hv::Session& session) {
   }
   if (command.fill_all) session.fill_all();
   session.set_compare_triangulation_only(command.compare_triangulation_only);
-  session.set_compare_mode(command.compare_smoothing ? hv::CompareMode::Smoothing
-                                                     : hv::CompareMode::Weights);
+  session.set_compare_mode(command.compare_smoothing  ? hv::CompareMode::Smoothing
+                           : command.compare_features ? hv::CompareMode::Features
+                                                      : hv::CompareMode::Weights);
   session.set_compare(command.compare);
   session.comparison();  // a script's screenshot shows it at once
   return true;
@@ -95,7 +95,8 @@ int run(const hv::CommandLine& command, const char* executable) {
   // A plain start reads the mesh on the worker, so the window shows at once with a progress
   // bar; scripted actions need the mesh first.
   const bool read_first = !command.screenshot.empty() || command.select_hole || command.fill_all ||
-                          command.remesh || command.fair || !command.save.empty();
+                          command.remesh || command.fair || !command.save.empty() ||
+                          command.feature_angle != holefill::FeatureOptions{}.angle_degrees;
   if (const auto status = run_without_window(command, session, files, mesh_path, read_first)) {
     return *status;
   }

@@ -21,6 +21,8 @@ inline constexpr Rgb kBorder{0, 170, 150};    // a loop that looks like an open 
 inline constexpr Rgb kSelectedBoundary{255, 0, 255};
 inline constexpr Rgb kJoinedBoundary{255, 150, 255};  // filled with the selected hole: islands
 inline constexpr Rgb kHoveredBoundary{0, 255, 255};
-inline constexpr Rgb kDivider{255, 216, 0};  // between the comparison's two views
+inline constexpr Rgb kDivider{255, 216, 0};       // between the comparison's two views
+inline constexpr Rgb kFeatureLine{255, 230, 60};  // a sharp feature entering the hole
+inline constexpr Rgb kFeaturePath{60, 255, 120};  // its continuation across the hole
 
 }  // namespace holefill::viewer::palette

@@ -220,6 +220,15 @@ void options_section(Session& session, Worker& worker, UiState& ui) {
   tooltip("Umbrella smoothing: the share of the way toward the mean each iteration moves");
   if (stepped) options.smooth.step = step;
   ImGui::EndDisabled();
+  float angle = static_cast<float>(options.features.angle_degrees);
+  ImGui::SetNextItemWidth(scaled(150.0f));
+  const bool angled = ImGui::SliderFloat("feature angle", &angle, 0.0f, 90.0f, "%.0f deg");
+  slider.after_item(angled);
+  tooltip(
+      "Sharp features continued through the hole: edges around it whose faces turn by more "
+      "than this are traced (yellow) and joined across the hole (green) when they pair up, and "
+      "the regions between them are filled apart. 0 turns it off");
+  if (angled) options.features.angle_degrees = angle;
   if (changed || slider.released) {
     ui.dragged_options.reset();
     if (start_options(worker, session, options) && worker.busy()) ui.applying_options = options;
@@ -305,20 +314,21 @@ void comparison_section(Session& session, Worker& worker, const UiState& ui) {
   if (ImGui::Checkbox("Compare", &compare)) session.set_compare(compare);
   tooltip(
       "Fill the selected hole two ways side by side, with one camera: the weights (liepa | "
-      "maxmin) or the smoothing (umbrella | fair); the mesh is not changed until Keep this");
+      "maxmin), the smoothing (umbrella | fair) or the sharp features (the paper's fill | "
+      "creases continued); the mesh is not changed until Keep this");
   ImGui::SameLine();
-  int mode = session.compare_mode() == CompareMode::Weights ? 0 : 1;
+  int mode = static_cast<int>(session.compare_mode());
   // As wide as its longest entry and the arrow, so that no entry is cut.
-  ImGui::SetNextItemWidth(ImGui::CalcTextSize("umbrella | fair").x + ImGui::GetFrameHeight() +
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize("paper | creases").x + ImGui::GetFrameHeight() +
                           2.0f * ImGui::GetStyle().FramePadding.x);
-  if (ImGui::Combo("##compare_mode", &mode, "liepa | maxmin\0umbrella | fair\0")) {
-    session.set_compare_mode(mode == 0 ? CompareMode::Weights : CompareMode::Smoothing);
+  if (ImGui::Combo("##compare_mode", &mode, "liepa | maxmin\0umbrella | fair\0paper | creases\0")) {
+    session.set_compare_mode(static_cast<CompareMode>(mode));
   }
   tooltip("What the two sides differ in");
   if (session.compare_mode() == CompareMode::Weights) {
     ImGui::SameLine();
     bool triangulation_only = session.compare_triangulation_only();
-    if (ImGui::Checkbox("triangulation only", &triangulation_only)) {
+    if (ImGui::Checkbox("first stage only", &triangulation_only)) {
       session.set_compare_triangulation_only(triangulation_only);
     }
     tooltip("Compare the first stage alone, where the weights differ most");
@@ -372,7 +382,9 @@ void legend() {
       {&palette::kJoinedBoundary, "island/bridged"},
       {&palette::kBorder, "border"},
       {&palette::kHoveredBoundary, "hovered"},
-      {&palette::kPatchVertex, "new vertex"}};
+      {&palette::kPatchVertex, "new vertex"},
+      {&palette::kFeatureLine, "feature line"},
+      {&palette::kFeaturePath, "continued"}};
   for (std::size_t i = 0; i < std::size(entries); ++i) {
     if (i % 3) ImGui::SameLine();
     ImGui::TextColored(color(*entries[i].first), "# %-12s", entries[i].second);
@@ -391,6 +403,8 @@ void display_section(UiState& ui) {
   ImGui::SameLine();
   ImGui::Checkbox("new vertices", &ui.display.patch_vertices);
   tooltip("Dots on the vertices the fills added (thinned out where they crowd)");
+  ImGui::Checkbox("feature lines", &ui.display.feature_lines);
+  tooltip("The sharp feature lines entering the selected hole and how they continue across it");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - scaled(100.0f));
   ImGui::InputText("##screenshot", &ui.screenshot_path);
   tooltip(

@@ -66,6 +66,12 @@ void Renderer::sync(Session& session) {
     upload(main_, session.mesh(), session, fills);
     main_.version = session.mesh_version();
   }
+  const HoleFeatures& features = session.selected_features();
+  if (features_version_ != session.features_version()) {
+    main_.feature_lines.upload(feature_segments(features, false));
+    main_.feature_paths.upload(feature_segments(features, true));
+    features_version_ = session.features_version();
+  }
   if (const Comparison* comparison = session.shown_comparison();
       comparison && left_.version != session.comparison_version()) {
     upload(left_, comparison->left.mesh, session, {&comparison->left.fill});
@@ -88,7 +94,8 @@ void Renderer::render(Session& session, const Camera& camera, const PixelRect& s
                session.selected(),
                hovered_hole,
                session.joined(),
-               {display.wireframe, display.flat, display.patch_vertices}};
+               {display.wireframe, display.flat, display.patch_vertices, display.feature_lines},
+               session.features_version()};
   if (cache_.show(key)) return;
   cache_.begin(key);
   glViewport(0, 0, framebuffer_width, framebuffer_height);
@@ -127,6 +134,7 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
   draw_surface(layer, transform, display);
   draw_edges_and_dots(layer, transform, rect, display);
   draw_outlines(layer, transform, rect, highlight);
+  if (display.feature_lines) draw_features(layer, transform, rect);
   glDisable(GL_DEPTH_TEST);
 }
 
@@ -188,13 +196,13 @@ void Renderer::draw_edges_and_dots(const MeshLayer& layer, const ViewTransform& 
   }
 }
 
-void Renderer::draw_outlines(const MeshLayer& layer, const ViewTransform& transform,
-                             const PixelRect& rect, const Highlight& highlight) {
+void Renderer::use_line_program(const ViewTransform& transform, const PixelRect& rect,
+                                const Highlight& highlight, float width_pixels) {
   line_program_.use();
   line_program_.set("u_view", transform.view);
   line_program_.set("u_projection", transform.projection);
   line_program_.set("u_viewport", glm::vec2(rect.width, rect.height));
-  line_program_.set("u_width", 5.0f);
+  line_program_.set("u_width", width_pixels);
   line_program_.set("u_depth_bias", transform.depth_bias);
   line_program_.set("u_pixel_size", transform.pixel_size);
   line_program_.set("u_pixel_bias", kOutlinePixelBias);
@@ -203,13 +211,29 @@ void Renderer::draw_outlines(const MeshLayer& layer, const ViewTransform& transf
   line_program_.set("u_joined_count", joined);
   if (joined > 0) line_program_.set("u_joined", highlight.joined->data(), joined);
   line_program_.set("u_hovered", highlight.hovered);
-  line_program_.set("u_color", rgba(palette::kBoundary));
   line_program_.set("u_selected_color", rgba(palette::kSelectedBoundary));
   line_program_.set("u_joined_color", rgba(palette::kJoinedBoundary));
   line_program_.set("u_hovered_color", rgba(palette::kHoveredBoundary));
+}
+
+void Renderer::draw_outlines(const MeshLayer& layer, const ViewTransform& transform,
+                             const PixelRect& rect, const Highlight& highlight) {
+  use_line_program(transform, rect, highlight, 5.0f);
+  line_program_.set("u_color", rgba(palette::kBoundary));
   layer.boundary.draw();
   line_program_.set("u_color", rgba(palette::kBorder));
   layer.borders.draw();
+}
+
+void Renderer::draw_features(const MeshLayer& layer, const ViewTransform& transform,
+                             const PixelRect& rect) {
+  // Thinner than the outlines, each kind in one colour (no highlighted id matches their -1).
+  const std::vector<int> none;
+  use_line_program(transform, rect, Highlight{-2, &none, -2}, 3.0f);
+  line_program_.set("u_color", rgba(palette::kFeatureLine));
+  layer.feature_lines.draw();
+  line_program_.set("u_color", rgba(palette::kFeaturePath));
+  layer.feature_paths.draw();
 }
 
 std::vector<std::uint8_t> Renderer::read_pixels(int width, int height) const {

@@ -43,6 +43,9 @@ class Renderer {
     MeshBuffers surface;
     BoundaryBuffers boundary;
     BoundaryBuffers borders;  // loops that look like the border of an open surface
+    // The selected hole's feature lines and their continuations (main view only).
+    BoundaryBuffers feature_lines;
+    BoundaryBuffers feature_paths;
     std::uint64_t version = ~std::uint64_t{0};
     float radius = 1.0f;
     float patch_edge_length = 0.0f;
@@ -75,11 +78,17 @@ class Renderer {
                            const PixelRect& rect, const DisplayOptions& display);
   void draw_outlines(const MeshLayer& layer, const ViewTransform& transform, const PixelRect& rect,
                      const Highlight& highlight);
+  // Sets up the thick-line program for `highlight`, lines `width_pixels` wide.
+  void use_line_program(const ViewTransform& transform, const PixelRect& rect,
+                        const Highlight& highlight, float width_pixels);
+  // The selected hole's feature lines and their continuations (feature_view.h).
+  void draw_features(const MeshLayer& layer, const ViewTransform& transform, const PixelRect& rect);
 
   GlProgram surface_program_;
   GlProgram solid_program_;
   GlProgram line_program_;
   MeshLayer main_;
+  std::uint64_t features_version_ = 0;  // of the features in main_'s buffers
   MeshLayer left_;
   MeshLayer right_;
   SceneCache cache_;  // the last picture, shown again while nothing in it changes

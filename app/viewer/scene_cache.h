@@ -26,7 +26,8 @@ struct SceneKey {
   int selected = -1;
   int hovered = -1;
   std::vector<int> joined;
-  bool display[3] = {false, false, false};  // wireframe, flat, patch vertices
+  bool display[4] = {false, false, false, false};  // wireframe, flat, patch vertices, features
+  std::uint64_t features_version = 0;
   bool operator==(const SceneKey&) const = default;
 };
 

@@ -63,6 +63,7 @@ void Session::load(Mesh mesh, std::string name) {
 void Session::adopt(Mesh mesh, std::string name, PreparedMesh prepared) {
   name_ = std::move(name);
   welds_ = prepared.weld;
+  loaded_version_ = next_serial();
   holes_ = std::move(prepared.holes);
   loaded_ = std::make_shared<const MeshState>(
       MeshState{std::move(mesh), std::vector<HoleFill>(holes_.size())});
@@ -109,6 +110,11 @@ void Session::set_options(const FillOptions& options) {
   if (run(options_request(options))) return;
   options_ = options;
   selection_changed();  // the bridge's gap limit is an option
+}
+
+const HoleFeatures& Session::selected_features() const {
+  const Hole* hole = selected_ >= 0 ? &holes_.at(selected_) : nullptr;
+  return features_.of(loaded_->mesh, loaded_version_, hole, options_.features);
 }
 
 std::optional<Stage> Session::next_stage() const {

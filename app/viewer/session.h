@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "comparison.h"
+#include "feature_view.h"
 #include "holefill/fill.h"
 #include "holefill/prepare.h"
 #include "holefill/progress.h"
@@ -120,6 +121,10 @@ class Session {
   // The selected hole, -1 for none. Selecting an island that has not been filled selects the
   // hole it lies in, and selecting a loop that another hole's patch closed selects that hole.
   int selected() const { return selected_; }
+  // The sharp features entering the selected hole under the options (feature_view.h), found on
+  // the mesh as loaded; none without a selection. features_version() changes when they do.
+  const HoleFeatures& selected_features() const;
+  std::uint64_t features_version() const { return features_.version(); }
   void select(int hole_id);
   // The loops filled together with the selected hole (one patch around them): its islands as
   // found at load (islands.h), or what shift-click made of them, or the hole to bridge to.
@@ -251,6 +256,8 @@ class Session {
   // copied, with the checkpoints that keep them (a million-face mesh is about 100 MB).
   std::shared_ptr<const MeshState> loaded_ = std::make_shared<const MeshState>();
   std::shared_ptr<const MeshState> state_ = loaded_;
+  std::uint64_t loaded_version_ = 0;  // a new number for each mesh adopted
+  mutable FeatureView features_;      // the selected hole's, cached
   std::vector<Hole> holes_;
   std::vector<bool> borders_;   // per hole, from classify_loops
   std::vector<bool> fillable_;  // per hole: among the preparation's ids_to_fill (prepare.h)

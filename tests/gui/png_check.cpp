@@ -70,7 +70,9 @@ int check_two_views(const Image& image, int scene_x) {
 
 int main(int argc, char** argv) {
   if (argc != 3) {
-    std::fprintf(stderr, "usage: png_check IMAGE selected-present|selected-absent|two-views\n");
+    std::fprintf(stderr,
+                 "usage: png_check IMAGE "
+                 "selected-present|selected-absent|two-views|features-present|features-absent\n");
     return 2;
   }
   Image image;
@@ -89,6 +91,15 @@ int main(int argc, char** argv) {
     return (check == "selected-present" ? n >= 100 : n == 0) ? 0 : 1;
   }
   if (check == "two-views") return check_two_views(image, scene_x);
+  if (check == "features-present" || check == "features-absent") {
+    const long traced = count(image, scene_x, image.width, palette::kFeatureLine);
+    const long continued = count(image, scene_x, image.width, palette::kFeaturePath);
+    std::printf("feature-line pixels: %ld, continued: %ld\n", traced, continued);
+    return (check == "features-present" ? traced >= 50 && continued >= 50
+                                        : traced == 0 && continued == 0)
+               ? 0
+               : 1;
+  }
   std::fprintf(stderr, "png_check: unknown check %s\n", argv[2]);
   return 2;
 }
