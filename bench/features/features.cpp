@@ -4,8 +4,10 @@
 // CGAL's triangulate_refine_and_fair_hole (when built with CGAL); measures each fill against the
 // surface that was cut away (crease_measure.h) and prints Markdown tables. See README.md.
 //
-//   holefill-features [--cases a,b] [--recipes a,b] [--real FILE]... [--real-edge F]
-//                     [--seed N] [--write DIR]
+//   holefill-features [--cases a,b] [--recipes a,b] [--feature-angle D] [--real FILE]...
+//                     [--real-edge F] [--seed N] [--write DIR]
+#include "holefill/features.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -39,9 +41,12 @@ using quality::UsageError;
 constexpr const char* kUsage = R"(usage: holefill-features [options]
 
   --cases a,b       the cases to run (default: all; names as in the tables)
-  --recipes a,b     default (holefill fill's defaults), fair3-remesh (--smooth fair
-                    --fair-order 3 --remesh on), cgal (CGAL's triangulate_refine_and_fair_hole),
-                    truth (the cut-away faces themselves) (default: all that this build has)
+  --recipes a,b     default (holefill fill's defaults: sharp features continued),
+                    default-nofeatures (--feature-angle 0: the paper's fill), fair3-remesh
+                    (--smooth fair --fair-order 3 --remesh on), fair3-remesh-nofeatures,
+                    cgal (CGAL's triangulate_refine_and_fair_hole), truth (the cut-away faces
+                    themselves) (default: all that this build has)
+  --feature-angle D the feature recipes' --feature-angle (default: the library's, 40)
   --real FILE       also a real closed mesh (repeatable): a hole across one of its creases and
                     one across a corner
   --real-edge F     real meshes' edges are split until none is longer than F times the
@@ -54,13 +59,15 @@ struct Arguments {
   std::vector<std::string> cases, recipes;
   std::vector<std::filesystem::path> real;
   double real_edge = 0.02;
+  double feature_angle = FeatureOptions{}.angle_degrees;
   unsigned seed = 1;
   std::optional<std::filesystem::path> write_dir;
   bool help = false;
 };
 
 std::vector<std::string> all_recipes() {
-  std::vector<std::string> recipes{"default", "fair3-remesh"};
+  std::vector<std::string> recipes{"default", "default-nofeatures", "fair3-remesh",
+                                   "fair3-remesh-nofeatures"};
 #ifdef HOLEFILL_QUALITY_WITH_CGAL
   recipes.push_back("cgal");
 #endif
@@ -84,6 +91,8 @@ Arguments parse_arguments(int argc, char** argv) {
       a.real.emplace_back(value());
     } else if (arg == "--real-edge") {
       a.real_edge = std::stod(value());
+    } else if (arg == "--feature-angle") {
+      a.feature_angle = std::stod(value());
     } else if (arg == "--seed") {
       a.seed = static_cast<unsigned>(std::stoul(value()));
     } else if (arg == "--write") {
@@ -99,8 +108,9 @@ Arguments parse_arguments(int argc, char** argv) {
   if (a.recipes.empty()) a.recipes = known;
   for (const auto& r : a.recipes) {
     if (std::find(known.begin(), known.end(), r) == known.end()) {
-      throw UsageError{"unknown recipe '" + r + "' (this build has: default, fair3-remesh" +
-                       std::string(known.size() > 3 ? ", cgal" : "") + ", truth)"};
+      std::string names;
+      for (const auto& k : known) names += (names.empty() ? "" : ", ") + k;
+      throw UsageError{"unknown recipe '" + r + "' (this build has: " + names + ")"};
     }
   }
   return a;
@@ -125,9 +135,13 @@ Mesh load_real(const std::filesystem::path& path, double edge_fraction) {
   return mesh;
 }
 
-FillOptions recipe_options(const std::string& recipe) {
+// Our recipes: "-nofeatures" turns the feature continuation off (angle 0), else `feature_angle`.
+FillOptions recipe_options(const std::string& recipe, double feature_angle) {
   FillOptions options;
-  if (recipe == "fair3-remesh") {
+  const std::string off = "-nofeatures";
+  const bool features = !recipe.ends_with(off);
+  options.features.angle_degrees = features ? feature_angle : 0.0;
+  if (recipe.starts_with("fair3-remesh")) {
     options.smooth.method = SmoothMethod::Fair;
     options.smooth.fair.order = 3;
     options.refine.remesh = true;
@@ -158,11 +172,13 @@ Row fill_and_measure(const CadCase& c, const quality::CutMesh& cut, const qualit
 #endif
   } else {
     filled = cut.mesh;
-    const auto fills = fill_holes(filled, loops, recipe_options(recipe));
+    const auto fills = fill_holes(filled, loops, recipe_options(recipe, a.feature_angle));
     const HoleFill& fill = fills.front();
     patch = {fill.patch.boundary, fill.patch.faces, fill.patch.new_vertices};
     if (fill.failed()) row.notes = "not filled: " + fill.failure;
-    if (!fill.smoothing_note.empty()) row.notes += fill.smoothing_note;
+    if (!fill.smoothing_note.empty()) row.notes += fill.smoothing_note + " ";
+    if (!fill.creases.empty()) row.notes += std::to_string(fill.creases.size()) + " creases ";
+    if (!fill.features_note.empty()) row.notes += fill.features_note;
   }
   row.quality = measure_feature_fill(c.closed, truth, hole, filled, patch, true);
   if (a.write_dir) save_mesh(filled, *a.write_dir / (c.name + "-" + recipe + ".obj"));
