@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "flat_index_map.h"
+#include "parallel_indices.h"
 
 namespace holefill::detail {
 namespace {
@@ -18,6 +19,8 @@ constexpr double kMaxMarkedCells = 1 << 22;
 constexpr double kMaxRegionCellsPerFace = 64;
 constexpr int kAxisBits = 21;
 constexpr double kMaxCellsPerAxis = 1 << kAxisBits;
+// Faces filed by one task when the faces near the regions are filed on several threads.
+constexpr int kFacesPerBlock = 1 << 16;
 
 // Finite coordinates, low <= high on every axis (a NaN, an infinity or the empty Box fail).
 bool is_finite(const Box& box) {
@@ -173,17 +176,17 @@ Box neighbourhood_of(const Mesh& mesh, const std::vector<VertexHandle>& loop) {
   return loop.empty() ? box : grown_by_extent(box);
 }
 
-MeshFaceIndex::MeshFaceIndex(const Mesh& mesh, const std::vector<Box>& regions)
+MeshFaceIndex::MeshFaceIndex(const Mesh& mesh, const std::vector<Box>& regions, unsigned threads)
     : mesh_(mesh), indexed_faces_(static_cast<int>(mesh.n_faces())) {
   std::vector<Box> finite;
   std::copy_if(regions.begin(), regions.end(), std::back_inserter(finite), is_finite);
   // Patches' faces added later are filed in cells of a hole's neighbourhood's size, so that a
   // lookup across one neighbourhood touches a few cells.
   added_ = BoxBuckets(mean_region_extent(finite));
-  if (!finite.empty()) file_faces_near(std::move(finite));
+  if (!finite.empty()) file_faces_near(std::move(finite), threads);
 }
 
-void MeshFaceIndex::file_faces_near(std::vector<Box> regions) const {
+void MeshFaceIndex::file_faces_near(std::vector<Box> regions, unsigned threads) const {
   Part part{std::move(regions), false, FaceGrid({}), FaceGrid({})};
   part.everywhere = !std::all_of(part.regions.begin(), part.regions.end(), is_finite);
   if (!part.everywhere) {
@@ -196,11 +199,26 @@ void MeshFaceIndex::file_faces_near(std::vector<Box> regions) const {
   std::optional<RegionCells> cells;
   if (!part.everywhere) cells = RegionCells::of(part.regions);
   part.everywhere = part.everywhere || !cells;
+  // The faces in blocks (on `threads` threads), each block's in order, the blocks joined in order.
+  const int faces = std::min(indexed_faces_, static_cast<int>(mesh_.n_faces()));
+  std::vector<std::vector<std::pair<int, Box>>> blocks(
+      static_cast<std::size_t>((faces + kFacesPerBlock - 1) / kFacesPerBlock));
+  for_each_index(blocks.size(), threads, [&](std::size_t block) {
+    const int begin = static_cast<int>(block) * kFacesPerBlock;
+    for (int f = begin; f < std::min(faces, begin + kFacesPerBlock); ++f) {
+      const FaceHandle face(f);
+      if (mesh_.has_face_status() && mesh_.status(face).deleted()) continue;
+      const Box box = corners_box(mesh_, face);
+      if (part.everywhere || cells->overlaps_region(box)) blocks[block].emplace_back(f, box);
+    }
+  });
   std::vector<std::pair<int, Box>> boxes;
-  for (const auto f : mesh_.faces()) {
-    if (f.idx() >= indexed_faces_) break;
-    const Box box = corners_box(mesh_, f);
-    if (part.everywhere || cells->overlaps_region(box)) boxes.emplace_back(f.idx(), box);
+  std::size_t filed = 0;
+  for (const auto& block : blocks) filed += block.size();
+  boxes.reserve(filed);
+  for (auto& block : blocks) {
+    boxes.insert(boxes.end(), block.begin(), block.end());
+    std::vector<std::pair<int, Box>>().swap(block);
   }
   part.faces = boxes.size();
   part.grid = FaceGrid(std::move(boxes));

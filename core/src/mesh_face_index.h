@@ -25,8 +25,9 @@ class MeshFaceIndex {
   // Indexes the faces the mesh has now (those not deleted), filing at once, in one pass over the
   // mesh, the faces near `regions`. The mesh must outlive the index, and the faces indexed must
   // keep their indices and corners (filling only adds faces after them); faces added to the mesh
-  // later are found only once add() is told of them.
-  MeshFaceIndex(const Mesh& mesh, const std::vector<Box>& regions);
+  // later are found only once add() is told of them. The pass runs on up to `threads` threads
+  // (the faces in blocks, filed in order: the same index on any number).
+  MeshFaceIndex(const Mesh& mesh, const std::vector<Box>& regions, unsigned threads = 1);
 
   // An entry added after the index was made (a finished patch's face, id = its index): found by
   // every lookup whose box it overlaps.
@@ -74,7 +75,7 @@ class MeshFaceIndex {
     std::size_t faces = 0;
   };
   const Part& part_holding(const Box& box) const;
-  void file_faces_near(std::vector<Box> regions) const;
+  void file_faces_near(std::vector<Box> regions, unsigned threads = 1) const;
 
   const Mesh& mesh_;
   int indexed_faces_;                // the faces below this index (those not deleted) are indexed
