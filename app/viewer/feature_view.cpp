@@ -48,6 +48,29 @@ const HoleFeatures& FeatureView::of(const Mesh& mesh, std::uint64_t mesh_version
   return features_;
 }
 
+std::string feature_summary(const HoleFeatures& features) {
+  const std::size_t n = features.lines.size();
+  if (n == 0) return {};
+  std::string text = std::to_string(n) +
+                     (n == 1 ? " sharp feature line enters" : " sharp feature lines enter") +
+                     " the hole: ";
+  if (!features.continued()) {
+    return text + "not continued (" + (features.note.empty() ? "no junction" : features.note) +
+           "), the paper's fill";
+  }
+  std::size_t creases = 0, corners = 0;
+  for (const auto& junction : features.junctions) (junction.corner ? corners : creases) += 1;
+  text += "continued";
+  if (creases)
+    text +=
+        " as " + (creases == 1 ? std::string("a crease") : std::to_string(creases) + " creases");
+  if (creases && corners) text += " and";
+  if (corners)
+    text +=
+        " to " + (corners == 1 ? std::string("a corner") : std::to_string(corners) + " corners");
+  return text;
+}
+
 std::vector<BoundarySegment> feature_segments(const HoleFeatures& features, bool continued) {
   std::vector<BoundarySegment> segments;
   if (!continued) {

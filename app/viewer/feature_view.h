@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "holefill/features.h"
@@ -29,6 +30,10 @@ class FeatureView {
   HoleFeatures features_;
   std::uint64_t version_ = 0;
 };
+
+// One line for the panel: how many feature lines enter the hole and what became of them ("2
+// sharp feature lines enter the hole: continued as a crease"); empty when none does.
+std::string feature_summary(const HoleFeatures& features);
 
 // The lines to draw: the feature lines traced outward from the hole (`continued` false), or
 // their continuations across it, entry to entry or entry to corner (`continued` true). Each

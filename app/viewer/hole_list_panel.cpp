@@ -157,6 +157,12 @@ void selection_line(const Session& session, const std::vector<HoleRow>& all) {
     ImGui::TextWrapped("%s", why.c_str());
     ImGui::PopStyleColor();
   }
+  if (const std::string features = feature_summary(session.selected_features());
+      !features.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, color(palette::kFeatureLine));
+    ImGui::TextWrapped("%s", features.c_str());
+    ImGui::PopStyleColor();
+  }
   if (session.joined().empty()) return;
   std::string loops;
   for (const int id : session.joined()) {

@@ -29,6 +29,8 @@ TEST(FeatureView, TheSelectedHolesCreaseIsDrawnOnTheTrueEdgeAndFollowsTheThresho
   const HoleFeatures& features = session.selected_features();
   ASSERT_EQ(features.lines.size(), 2u) << features.note;
   ASSERT_TRUE(features.continued()) << features.note;
+  EXPECT_EQ(feature_summary(features),
+            "2 sharp feature lines enter the hole: continued as a crease");
   const auto traced = feature_segments(features, false);
   const auto continued = feature_segments(features, true);
   ASSERT_FALSE(traced.empty());
