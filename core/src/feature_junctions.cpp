@@ -25,6 +25,8 @@ constexpr double kStraightAngle = 10.0 * kDegree;
 constexpr double kCurvedAngle = 50.0 * kDegree;
 constexpr double kCurvedAsymmetry = 10.0 * kDegree;
 const double kCurvedTwist = std::sin(10.0 * kDegree);
+// ... and each line's own curvature within this factor of the arc's.
+constexpr double kCurvatureFactor = 2.0;
 // More lines than this entering one hole is no part's edge but a sharp-edged mess.
 constexpr std::size_t kMostLines = 12;
 // Samples of a crease's curve to measure its length.
@@ -75,8 +77,8 @@ HoleExtent extent_of(const Mesh& mesh, const Hole& hole) {
   return extent;
 }
 
-// The best corner among the unused lines: the triple whose lines point at their nearest point
-// most closely, with every other unused line that points there too. Nothing when no triple does.
+// The best corner among the unused lines: the triple that points at its nearest point most
+// closely, with every other unused line that points there too. Nothing when no triple does.
 std::optional<FeatureJunction> best_corner(const HoleFeatures& features,
                                            const std::vector<bool>& used,
                                            const HoleExtent& extent) {
@@ -84,17 +86,22 @@ std::optional<FeatureJunction> best_corner(const HoleFeatures& features,
   const int n = static_cast<int>(lines.size());
   std::optional<FeatureJunction> best;
   double best_miss = kCornerAngle;
+  const auto consider = [&](const std::vector<int>& group) {
+    std::vector<const FeatureLine*> members;
+    for (const int l : group) {
+      if (used[l]) return;
+      members.push_back(&lines[l]);
+    }
+    const auto point = nearest_point(members);
+    if (!point || (*point - extent.centroid).norm() > extent.radius) return;
+    const double miss = corner_miss(members, *point);
+    if (miss >= best_miss) return;
+    best_miss = miss;
+    best = FeatureJunction{group, true, *point, {}};
+  };
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
-      for (int k = j + 1; k < n; ++k) {
-        if (used[i] || used[j] || used[k]) continue;
-        const auto point = nearest_point({&lines[i], &lines[j], &lines[k]});
-        if (!point || (*point - extent.centroid).norm() > extent.radius) continue;
-        const double miss = corner_miss({&lines[i], &lines[j], &lines[k]}, *point);
-        if (miss >= best_miss) continue;
-        best_miss = miss;
-        best = FeatureJunction{{i, j, k}, true, *point, {}};
-      }
+      for (int k = j + 1; k < n; ++k) consider({i, j, k});
     }
   }
   if (!best) return best;
@@ -121,7 +128,13 @@ std::optional<double> crease_misfit(const FeatureLine& a, const FeatureLine& b) 
   const double asymmetry = angle_between(a.direction - b.direction, chord);
   const double twist =
       std::abs(OpenMesh::dot(a.direction, OpenMesh::cross(b.direction, chord / chord.norm())));
-  if (worst < kCurvedAngle && asymmetry < kCurvedAsymmetry && twist < kCurvedTwist) {
+  // And the lines curve as that arc does (two straight lines at an angle meet at a corner).
+  const double arc = 2.0 * std::sin(0.5 * (at_a + at_b)) / chord.norm();
+  const auto bends_so = [arc](double curvature) {
+    return curvature > arc / kCurvatureFactor && curvature < arc * kCurvatureFactor;
+  };
+  if (worst < kCurvedAngle && asymmetry < kCurvedAsymmetry && twist < kCurvedTwist &&
+      bends_so(a.curvature) && bends_so(b.curvature)) {
     return worst + asymmetry;
   }
   return std::nullopt;

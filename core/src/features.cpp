@@ -27,10 +27,12 @@ Point normalized_or_zero(const Point& p) {
 }
 
 // The line from `start` through its sharp edge to `next`, continued along the sharp edge that
-// turns least at each vertex, up to kTraceEdges edges or a boundary vertex or a sharp turn.
+// turns least at each vertex, up to kTraceEdges edges or a boundary vertex or a sharp turn;
+// `at_corner` tells whether it stopped where other sharp edges turn away (a corner of the part).
 std::vector<Point> trace_line(const Mesh& mesh, VertexHandle start, VertexHandle next,
-                              double angle_degrees) {
+                              double angle_degrees, bool& at_corner) {
   std::vector<Point> traced{mesh.point(start), mesh.point(next)};
+  at_corner = false;
   const double min_cos = std::cos(kMaxTraceTurnDegrees * std::numbers::pi / 180.0);
   VertexHandle previous = start, current = next;
   while (static_cast<int>(traced.size()) <= kTraceEdges && !mesh.is_boundary(current)) {
@@ -40,6 +42,7 @@ std::vector<Point> trace_line(const Mesh& mesh, VertexHandle start, VertexHandle
     for (const auto h : mesh.voh_range(current)) {
       const VertexHandle to = mesh.to_vertex_handle(h);
       if (to == previous || !is_sharp_edge(mesh, mesh.edge_handle(h), angle_degrees)) continue;
+      at_corner = true;
       const double turn =
           OpenMesh::dot(heading, normalized_or_zero(mesh.point(to) - mesh.point(current)));
       if (turn > best_cos) {
@@ -48,6 +51,7 @@ std::vector<Point> trace_line(const Mesh& mesh, VertexHandle start, VertexHandle
       }
     }
     if (!best.is_valid()) break;
+    at_corner = false;
     previous = current;
     current = best;
     traced.push_back(mesh.point(current));
@@ -59,6 +63,7 @@ std::vector<Point> trace_line(const Mesh& mesh, VertexHandle start, VertexHandle
 // parameters, exact for points on a line or, to second order, on a circle), pointing away from
 // the traced line, i.e. into the hole.
 Point inward_tangent(const std::vector<Point>& traced) {
+  if (traced.size() < 3) return normalized_or_zero(traced[0] - traced[1]);
   const double h1 = (traced[1] - traced[0]).norm();
   const double h2 = h1 + (traced[2] - traced[1]).norm();
   // Derivative at t = 0 of the Lagrange quadratic through (0, p0), (h1, p1), (h2, p2).
@@ -70,6 +75,7 @@ Point inward_tangent(const std::vector<Point>& traced) {
 // Where the quadratic through traced[0..2] (chord-length parameters, outward) puts the point
 // `step` before traced[0], i.e. the line continued into the hole by that length.
 Point extrapolated(const std::vector<Point>& traced, double step) {
+  if (traced.size() < 3) return traced[0] + normalized_or_zero(traced[0] - traced[1]) * step;
   const double h1 = (traced[1] - traced[0]).norm();
   const double h2 = h1 + (traced[2] - traced[1]).norm();
   const double t = -step;
@@ -98,6 +104,14 @@ void follow_along_boundary(const Mesh& mesh, const Hole& hole, FeatureLine& line
     }
     if (!moved) return;
   }
+}
+
+// The curvature (1 / radius) of the circle through traced[0..2]; 0 with fewer points.
+double curvature_of(const std::vector<Point>& traced) {
+  if (traced.size() < 3) return 0.0;
+  const Point u = traced[0] - traced[1], w = traced[2] - traced[1];
+  const double span = (traced[2] - traced[0]).norm();
+  return span > 0.0 ? 2.0 * OpenMesh::cross(u, w).norm() / (u.norm() * w.norm() * span) : 0.0;
 }
 
 // Whether the loop is a plain boundary loop: every halfedge real, no vertex twice.
@@ -129,10 +143,13 @@ HoleFeatures find_hole_features(const Mesh& mesh, const Hole& hole, const Featur
       FeatureLine line;
       line.entry = i;
       line.vertex = v;
-      line.traced = trace_line(mesh, v, mesh.to_vertex_handle(h), options.angle_degrees);
-      if (static_cast<int>(line.traced.size()) < kMinTracedEdges + 1) continue;
+      bool at_corner = false;
+      line.traced = trace_line(mesh, v, mesh.to_vertex_handle(h), options.angle_degrees, at_corner);
+      // One edge is enough where the line ends at a corner of the part a step away.
+      if (static_cast<int>(line.traced.size()) < kMinTracedEdges + 1 && !at_corner) continue;
       follow_along_boundary(mesh, hole, line);
       line.direction = inward_tangent(line.traced);
+      line.curvature = curvature_of(line.traced);
       for (std::size_t k = 1; k < line.traced.size(); ++k) {
         line.edge_length += (line.traced[k] - line.traced[k - 1]).norm();
       }

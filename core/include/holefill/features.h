@@ -32,10 +32,11 @@ struct FeatureLine {
   int entry = -1;       // position of its boundary vertex in Hole::vertices
   VertexHandle vertex;  // that vertex
   // The line traced outward along sharp edges (at each vertex the sharp edge that turns least),
-  // the entry vertex first: at least 3 points (2 edges).
+  // the entry vertex first: at least 3 points (2 edges), or 2 where the line ends at a corner.
   std::vector<Point> traced;
   Point direction{0.0, 0.0, 0.0};  // unit tangent at the entry, pointing into the hole
   double edge_length = 0.0;        // mean length of the traced edges
+  double curvature = 0.0;          // of the circle through its first three points (0: straight)
 };
 
 // How lines continue through the hole.
