@@ -30,15 +30,20 @@ std::vector<WeightKind> weights_in_order(WeightKind chosen) {
 
 class Checker {
  public:
-  Checker(const Mesh& mesh, const HolePolygon& polygon, const MeshFaceIndex* around, bool exact_too)
-      : mesh_(mesh), polygon_(polygon), around_(around), exact_too_(exact_too) {}
+  Checker(const Mesh& mesh, const HolePolygon& polygon, const MeshFaceIndex* around, bool exact_too,
+          const Progress* progress)
+      : mesh_(mesh),
+        polygon_(polygon),
+        around_(around),
+        exact_too_(exact_too),
+        progress_(progress) {}
 
   std::vector<IntersectingPair> pairs(const PolygonTriangulation& triangulation) {
     std::vector<std::array<Point, 3>> corners;
     for (const auto& t : triangulation.triangles) {
       corners.push_back({polygon_.points[t[0]], polygon_.points[t[1]], polygon_.points[t[2]]});
     }
-    return triangle_intersections(mesh_, corners, nullptr, grid(), exact_too_);
+    return triangle_intersections(mesh_, corners, nullptr, grid(), exact_too_, progress_);
   }
 
  private:
@@ -57,6 +62,7 @@ class Checker {
   const HolePolygon& polygon_;
   const MeshFaceIndex* around_;
   bool exact_too_;
+  const Progress* progress_;
   std::optional<MeshFaceIndex> own_;
   int checks_ = 0;
 };
@@ -82,7 +88,7 @@ PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
   pairs = 0;
   if (!plan.triangulation) return plan;
   HolePolygon polygon = hole_polygon(mesh, hole);
-  Checker checker(mesh, polygon, around, exact_too);
+  Checker checker(mesh, polygon, around, exact_too, options.progress);
   std::vector<IntersectingPair> found = checker.pairs(*plan.triangulation);
   pairs = report.first_pairs = found.size();
   if (found.empty()) return plan;
@@ -98,8 +104,9 @@ PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
     restricted = restricted_chords(polygon, options.restricted);
     std::sort(restricted.begin(), restricted.end());
   }
-  for (const auto& chord : chords_through_mesh(mesh, polygon.points, around,
-                                               restricted_alone ? &restricted : nullptr)) {
+  for (const auto& chord :
+       chords_through_mesh(mesh, polygon.points, around, restricted_alone ? &restricted : nullptr,
+                           options.progress)) {
     polygon.forbidden_chords.push_back(chord);
   }
   std::set<std::array<int, 3>> forbidden;
@@ -118,6 +125,7 @@ PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
       polygon.forbidden_triangles.assign(forbidden.begin(), forbidden.end());
       auto next = triangulate_polygon(polygon, with);
       ++report.rounds;
+      if (is_cancelled(options.progress)) return plan;
       if (!next || next->quality.degenerate > 0) break;
       found = checker.pairs(*next);
       current = std::move(*next);

@@ -18,7 +18,8 @@ namespace holefill::detail {
 // mesh only (the hole is not filled yet). `around` holds the mesh's faces by face index (or is
 // null: the mesh is then scanned). Fills `report` and sets `pairs` to the intersecting pairs of
 // the triangulation returned. With `exact_too`, the exact test joins the check
-// (patch_intersections.h).
+// (patch_intersections.h). Once options.progress is cancelled it returns `plan` at its next
+// check (the caller, which asked, drops it).
 PlannedTriangulation avoid_intersections(const Mesh& mesh, const Hole& hole,
                                          PlannedTriangulation plan,
                                          const TriangulateOptions& options,

@@ -189,7 +189,7 @@ Operator build_operator(const Mesh& mesh, const Region& region, const FairOption
 // Builds the operator on the mesh's current geometry and solves; on success writes the unknowns'
 // new positions into the mesh. Returns the problem otherwise, the mesh unchanged.
 std::string solve(Mesh& mesh, const Region& region, const FairOptions& options,
-                  const Surface* surface, FairResult& result) {
+                  const Surface* surface, FairResult& result, const Progress* progress) {
   const int n = static_cast<int>(region.vertices.size());
   const int unknowns = static_cast<int>(region.unknowns), fixed = n - unknowns;
   Eigen::MatrixXd positions(n, 3);
@@ -201,16 +201,22 @@ std::string solve(Mesh& mesh, const Region& region, const FairOptions& options,
 
   const Operator op = build_operator(mesh, region, options, surface);
   if (!op.problem.empty()) return op.problem;
+  if (is_cancelled(progress)) return kCancelledReason;
   // K (M^-1 K)^(k-1): symmetric positive definite on the unknowns' block.
   SparseMatrix system = op.stiffness;
   for (int power = 1; power < options.order; ++power) {
     system = SparseMatrix(op.stiffness * op.inverse_mass.asDiagonal() * system);
+    if (is_cancelled(progress)) return kCancelledReason;
   }
   const SparseMatrix on_unknowns = system.block(0, 0, unknowns, unknowns);
   const SparseMatrix on_fixed = system.block(0, unknowns, unknowns, fixed);
   const Eigen::MatrixXd rhs = -(on_fixed * positions.bottomRows(fixed));
 
-  Eigen::SimplicialLDLT<SparseMatrix> solver(on_unknowns);
+  Eigen::SimplicialLDLT<SparseMatrix> solver;
+  solver.analyzePattern(on_unknowns);
+  if (is_cancelled(progress)) return kCancelledReason;
+  solver.factorize(on_unknowns);
+  if (is_cancelled(progress)) return kCancelledReason;
   if (solver.info() != Eigen::Success) {
     return "the fairing system could not be factorised (singular or not positive)";
   }
@@ -239,7 +245,7 @@ std::string solve(Mesh& mesh, const Region& region, const FairOptions& options,
 
 // fair_patch, on the faces of `surface` only (null: every face).
 FairResult fair_on(Mesh& mesh, const Patch& patch, const FairOptions& options,
-                   const Surface* surface) {
+                   const Surface* surface, const Progress* progress) {
   FairResult result;
   if (options.order < 1 || options.order > 3) {
     result.problem = "fairing order must be 1, 2 or 3, got " + std::to_string(options.order);
@@ -263,20 +269,22 @@ FairResult fair_on(Mesh& mesh, const Patch& patch, const FairOptions& options,
     result.problem = "no fixed vertices around the patch to continue";
     return result;
   }
-  result.problem = solve(mesh, region, options, surface, result);
+  result.problem = solve(mesh, region, options, surface, result, progress);
   result.solved = result.problem.empty();
   return result;
 }
 
 }  // namespace
 
-FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options) {
-  return fair_on(mesh, patch, options, nullptr);
+FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options,
+                      const Progress* progress) {
+  return fair_on(mesh, patch, options, nullptr, progress);
 }
 
 FairResult fair_patch_within(Mesh& mesh, const Patch& patch, const FairOptions& options,
-                             const std::function<bool(FaceHandle)>& surface) {
-  return fair_on(mesh, patch, options, &surface);
+                             const std::function<bool(FaceHandle)>& surface,
+                             const Progress* progress) {
+  return fair_on(mesh, patch, options, &surface, progress);
 }
 
 }  // namespace holefill

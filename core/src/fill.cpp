@@ -33,28 +33,36 @@ std::size_t count_intersections(const Mesh& mesh, const Patch& patch,
 // Each runs one stage on fill.patch and keeps it only when it made no degenerate triangle and no
 // new intersection; advance_with alone moves the patch's stage on.
 
+// The cancel that FillOptions carries (TriangulateOptions::progress) stops every stage and check.
+const Progress* progress_of(const FillOptions& options) { return options.triangulate.progress; }
+bool cancelled(const FillOptions& options) { return is_cancelled(progress_of(options)); }
+
 // Smooths `patch` (the fill's, or one region of it between creases, fairing then on `surface`
 // only): the paper's umbrella operator, or fairing with umbrella as the fallback.
 void smooth_region(Mesh& mesh, const Patch& patch, HoleFill& fill, const SmoothOptions& options,
-                   const std::function<bool(FaceHandle)>* surface) {
+                   const std::function<bool(FaceHandle)>* surface, const Progress* progress) {
   if (options.method == SmoothMethod::Fair) {
-    const FairResult result = surface ? fair_patch_within(mesh, patch, options.fair, *surface)
-                                      : fair_patch(mesh, patch, options.fair);
-    if (result.solved) return;
+    const FairResult result = surface
+                                  ? fair_patch_within(mesh, patch, options.fair, *surface, progress)
+                                  : fair_patch(mesh, patch, options.fair, progress);
+    if (result.solved || is_cancelled(progress)) return;
     fill.smoothing_note = "fairing fell back to umbrella smoothing: " + result.problem;
   }
   SmoothOptions umbrella = options;
   umbrella.method = SmoothMethod::Umbrella;
-  smooth_patch(mesh, patch, umbrella);
+  smooth_patch(mesh, patch, umbrella, progress);
 }
 
 // The smoothing stage, on the whole patch or region by region between its creases.
-void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options, double feature_angle) {
-  if (fill.creases.empty()) return smooth_region(mesh, fill.patch, fill, options, nullptr);
+void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options, double feature_angle,
+            const Progress* progress) {
+  if (fill.creases.empty())
+    return smooth_region(mesh, fill.patch, fill, options, nullptr, progress);
   for (const Patch& region : detail::crease_regions(mesh, fill.patch, fill.creases)) {
+    if (is_cancelled(progress)) return;
     const auto surface =
         detail::same_side_faces(mesh, region, fill.creases, feature_angle, options.fair.order);
-    smooth_region(mesh, region, fill, options, &surface);
+    smooth_region(mesh, region, fill, options, &surface, progress);
   }
 }
 
@@ -62,7 +70,9 @@ void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options, double fea
 // clean (do no harm), by the independent exact check too.
 std::size_t intersections_of(const Mesh& mesh, const Patch& patch,
                              const detail::MeshFaceIndex* index, const FillOptions& options) {
-  return detail::patch_intersections(mesh, patch, index, !options.allow_intersections).size();
+  return detail::patch_intersections(mesh, patch, index, !options.allow_intersections,
+                                     progress_of(options))
+      .size();
 }
 
 // Why a finished stage must be undone: it made a degenerate triangle, or it made a patch that
@@ -94,6 +104,10 @@ bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillO
                                             !options.allow_intersections);
     });
   }
+  if (cancelled(options)) {
+    fill.failure = kCancelledReason;
+    return false;
+  }
   TriangulateHoleResult result = apply_triangulation(mesh, hole, planned);
   if (!result.patch) {
     fill.failure = result.failure;
@@ -108,8 +122,9 @@ bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillO
 }
 
 // Refines the patch; a refinement with remeshing that must be undone is tried again without the
-// remeshing, and one that still fails is undone (the patch stays as triangulated).
-void refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
+// remeshing, and one that still fails is undone (the patch stays as triangulated). False when a
+// cancel stopped it: undone too, the fill failed with the reason.
+bool refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
                   const detail::MeshFaceIndex* index) {
   const detail::StageUndo undo(mesh, fill.patch);
   std::size_t intersections = 0;
@@ -118,9 +133,10 @@ void refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
     std::string problem;
     fill.times.refine_seconds += timed([&] {
       try {
-        fill.refinement = fill.creases.empty() ? refine_patch(mesh, fill.patch, refine)
-                                               : detail::refine_between_creases(
-                                                     mesh, fill.patch, fill.creases, refine);
+        fill.refinement =
+            fill.creases.empty()
+                ? refine_patch(mesh, fill.patch, refine, progress_of(options))
+                : detail::refine_between_creases(mesh, fill.patch, fill.creases, refine);
       } catch (const std::bad_alloc&) {
         problem = "not enough memory";
       }
@@ -132,6 +148,10 @@ void refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
     return problem;
   };
   std::string problem = refine_and_check(options.refine);
+  if (cancelled(options)) {  // not undone: on a large mesh the undo takes seconds
+    fill.failure = kCancelledReason;
+    return false;
+  }
   if (!problem.empty() && options.refine.remesh) {
     // The paper's refinement alone may be fine where the remeshing on top of it was not.
     undo.undo(mesh, fill.patch);
@@ -145,7 +165,7 @@ void refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
     undo.undo(mesh, fill.patch);
     fill.refinement = RefineResult{};
     fill.refinement_note = "refinement undone: " + problem;
-    return;
+    return true;
   }
   fill.self_intersections = intersections;
   if (fill.refinement.stopped_at_vertex_cap) {
@@ -154,10 +174,12 @@ void refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
                            std::to_string(std::lround(options.refine.max_density)) +
                            " times what the boundary's density asks for)";
   }
+  return true;
 }
 
 // Smooths the patch; a smoothing that must be undone puts the new vertices back where they were.
-void smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
+// False when a cancel stopped it: undone too, the fill failed with the reason.
+bool smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
                   const detail::MeshFaceIndex* index) {
   std::vector<Point> positions;
   for (const auto v : fill.patch.new_vertices) positions.push_back(mesh.point(v));
@@ -165,19 +187,24 @@ void smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
   std::size_t intersections = 0;
   SmoothOptions smoothing = options.smooth;
   if (fill.fair_rescue) smoothing.method = SmoothMethod::Fair;
-  fill.times.smooth_seconds =
-      timed([&] { smooth(mesh, fill, smoothing, options.features.angle_degrees); });
+  fill.times.smooth_seconds = timed(
+      [&] { smooth(mesh, fill, smoothing, options.features.angle_degrees, progress_of(options)); });
   fill.times.check_seconds +=
       timed([&] { problem = stage_problem(mesh, fill, index, options, intersections); });
-  if (problem.empty()) {
+  if (problem.empty() && !cancelled(options)) {
     fill.self_intersections = intersections;
-    return;
+    return true;
   }
   for (std::size_t i = 0; i < positions.size(); ++i) {
     mesh.set_point(fill.patch.new_vertices[i], positions[i]);
   }
+  if (cancelled(options)) {
+    fill.failure = kCancelledReason;
+    return false;
+  }
   fill.smoothing_note +=
       (fill.smoothing_note.empty() ? "" : "; ") + std::string("smoothing undone: ") + problem;
+  return true;
 }
 
 // Whether the stages after triangulation, tried now on the patch, leave it clear of the mesh; the
@@ -232,6 +259,10 @@ bool may_stay(Mesh& mesh, HoleFill& fill, const FillOptions& options,
   fill.patch = Patch{};
   fill.creases.clear();
   fill.self_intersections = 0;
+  if (cancelled(options)) {  // the trial of the later stages was stopped: no verdict
+    fill.failure = kCancelledReason;
+    return false;
+  }
   fill.refused_intersections = pairs;
   fill.failure = "every patch tried intersects the mesh (the best in " + std::to_string(pairs) +
                  (pairs == 1 ? " pair" : " pairs") + " of triangles), so it is left open";
@@ -254,17 +285,21 @@ StageRun advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOp
       }
       break;
     case Stage::Triangulated:
-      refine_stage(mesh, fill, options, index);
+      if (!refine_stage(mesh, fill, options, index)) return StageRun::Failed;
       fill.patch.stage = Stage::Refined;
       break;
     case Stage::Refined:
-      smooth_stage(mesh, fill, options, index);
+      if (!smooth_stage(mesh, fill, options, index)) return StageRun::Failed;
       fill.patch.stage = Stage::Smoothed;
       break;
     case Stage::Smoothed:
       return StageRun::AllDone;
   }
   if (!may_stay(mesh, fill, options, index)) return StageRun::Failed;
+  if (cancelled(options)) {  // the measures below take a while on a large patch
+    fill.failure = kCancelledReason;
+    return StageRun::Failed;
+  }
   // Colours, normals, UVs, materials ... of the new elements.
   fill.attributes_note = interpolate_patch_attributes(mesh, fill.patch);
   fill.stats = patch_stats(mesh, fill.patch);

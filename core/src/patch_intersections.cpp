@@ -29,11 +29,20 @@ Box box_of_corners(const std::array<Point, 3>& corners) {
   return box;
 }
 
+// A cancel is looked at once per this many triangles, faces or chords: well under a millisecond
+// of work each, and a load of an atomic is nothing beside it.
+constexpr int kBetweenCancelChecks = 1024;
+
+bool stop_at(std::size_t i, const Progress* progress) {
+  return i % kBetweenCancelChecks == 0 && is_cancelled(progress);
+}
+
 }  // namespace
 
 std::vector<IntersectingPair> triangle_intersections(
     const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
-    const PatchFaceSet* in_patch, const MeshFaceIndex* around, bool exact_too) {
+    const PatchFaceSet* in_patch, const MeshFaceIndex* around, bool exact_too,
+    const Progress* progress) {
   if (triangles.empty()) return {};
   // The index may number the faces of another mesh than the patch's (a hole filled apart from the
   // mesh, patch_apart.h): the other triangles are read there, and none of them is the patch's.
@@ -64,9 +73,15 @@ std::vector<IntersectingPair> triangle_intersections(
     boxes.emplace_back(static_cast<int>(boxes.size()), box);
   };
   if (around) {
-    for (const int f : near_reach) consider(FaceHandle(f));
+    for (std::size_t i = 0; i < near_reach.size(); ++i) {
+      if (stop_at(i, progress)) return {};
+      consider(FaceHandle(near_reach[i]));
+    }
   } else {
-    for (const auto f : mesh.faces()) consider(f);
+    for (const auto f : mesh.faces()) {
+      if (stop_at(f.idx(), progress)) return {};
+      consider(f);
+    }
   }
   double magnitude = 0.0;
   for (const auto& [id, box] : boxes) magnitude = std::max(magnitude, box.magnitude());
@@ -76,6 +91,7 @@ std::vector<IntersectingPair> triangle_intersections(
   scaled.reserve(faces.size());
   for (const auto& t : triangles) scaled.push_back(triangle_from(t, scale));
   for (std::size_t o = triangles.size(); o < faces.size(); ++o) {
+    if (stop_at(o, progress)) return {};
     auto fv = others.cfv_iter(faces[o]);
     scaled.push_back(
         triangle_from({others.point(*fv), others.point(*++fv), others.point(*++fv)}, scale));
@@ -90,6 +106,7 @@ std::vector<IntersectingPair> triangle_intersections(
   const FaceGrid grid(std::move(boxes));
   auto scan = [&](int begin, int end, std::vector<IntersectingPair>& pairs) {
     for (int i = begin; i < end; ++i) {
+      if (stop_at(i, progress)) return;
       if (!scaled[i] && !exact_too) continue;
       for (const int o : grid.near(box_of_corners(triangles[i]))) {
         if (o < patch_triangles && o <= i)
@@ -122,9 +139,11 @@ std::vector<IntersectingPair> triangle_intersections(
   return pairs;
 }
 
-std::vector<std::pair<int, int>> chords_through_mesh(
-    const Mesh& mesh, const std::vector<Point>& points, const MeshFaceIndex* around,
-    const std::vector<std::pair<int, int>>* among) {
+std::vector<std::pair<int, int>> chords_through_mesh(const Mesh& mesh,
+                                                     const std::vector<Point>& points,
+                                                     const MeshFaceIndex* around,
+                                                     const std::vector<std::pair<int, int>>* among,
+                                                     const Progress* progress) {
   const int n = static_cast<int>(points.size());
   Box reach;
   for (const auto& p : points) reach.add(p);
@@ -151,6 +170,7 @@ std::vector<std::pair<int, int>> chords_through_mesh(
   }
   const SegmentBoxTree tree(std::move(boxes));
   std::vector<std::pair<int, int>> chords;
+  std::size_t tested = 0;
   auto test = [&](int i, int k) {
     if (k - i < 2 || (i == 0 && k == n - 1)) return;
     const bool through = tree.any_along(points[i], points[k], [&](int o) {
@@ -160,17 +180,21 @@ std::vector<std::pair<int, int>> chords_through_mesh(
     if (through) chords.emplace_back(i, k);
   };
   if (among) {
-    for (const auto& [i, k] : *among) test(i, k);
+    for (const auto& [i, k] : *among) {
+      if (stop_at(++tested, progress)) break;
+      test(i, k);
+    }
     return chords;
   }
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < n && !is_cancelled(progress); ++i) {
     for (int k = i + 2; k < n; ++k) test(i, k);
   }
   return chords;
 }
 
 std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch& patch,
-                                                  const MeshFaceIndex* around, bool exact_too) {
+                                                  const MeshFaceIndex* around, bool exact_too,
+                                                  const Progress* progress) {
   // A set over the patch's faces, not a flag per face of the mesh: this runs after every stage of
   // every hole, and on a 10M-face mesh clearing and faulting in those flags was most of a fill.
   const PatchFaceSet in_patch(patch);
@@ -181,7 +205,7 @@ std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch&
     for (const auto v : mesh.fv_range(f)) t[c++ % 3] = mesh.point(v);
     triangles.push_back(t);
   }
-  return triangle_intersections(mesh, triangles, &in_patch, around, exact_too);
+  return triangle_intersections(mesh, triangles, &in_patch, around, exact_too, progress);
 }
 
 }  // namespace holefill::detail

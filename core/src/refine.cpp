@@ -41,7 +41,10 @@ bool split_where_too_coarse(detail::FlatPatch& flat, int face, double tau, Refin
 }
 
 // Which limit stops refinement before it tests another face: the face limit first.
-enum class Stop { None, FaceLimit, VertexCap };
+enum class Stop { None, FaceLimit, VertexCap, Cancelled };
+
+// A cancel is looked at once per this many faces tested (well under a millisecond of splits).
+constexpr int kFacesBetweenCancelChecks = 4096;
 
 Stop limit_reached(const detail::FlatPatch& flat, std::size_t vertices_before,
                    const RefineOptions& options, std::size_t vertex_cap) {
@@ -56,12 +59,14 @@ Stop limit_reached(const detail::FlatPatch& flat, std::size_t vertices_before,
 // limit stops it. The limits hold before a face when they held before the round or after the
 // last split (nothing else changes them), so they are asked then, while faces remain.
 Stop refine_round(detail::FlatPatch& flat, std::size_t vertices_before,
-                  const RefineOptions& options, RefineResult& result, std::size_t& splits) {
+                  const RefineOptions& options, RefineResult& result, std::size_t& splits,
+                  const Progress* progress) {
   const int faces_now = flat.face_count();  // faces split off in this round wait for the next
   Stop stop =
       faces_now > 0 ? limit_reached(flat, vertices_before, options, result.vertex_cap) : Stop::None;
   for (int face = flat.next_untested(0, faces_now); stop == Stop::None && face < faces_now;
        face = flat.next_untested(face + 1, faces_now)) {
+    if (face % kFacesBetweenCancelChecks == 0 && is_cancelled(progress)) return Stop::Cancelled;
     if (!split_where_too_coarse(flat, face, options.tau, result)) {
       flat.settle_face(face);
       continue;
@@ -115,12 +120,14 @@ std::size_t relax_patch_edges(Mesh& mesh, const Patch& patch) {
   return swaps;
 }
 
-RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options) {
+RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options,
+                          const Progress* progress) {
   assign_boundary_scales(mesh, patch);
-  return detail::refine_with_scales(mesh, patch, options);
+  return detail::refine_with_scales(mesh, patch, options, progress);
 }
 
-RefineResult detail::refine_with_scales(Mesh& mesh, Patch& patch, const RefineOptions& options) {
+RefineResult detail::refine_with_scales(Mesh& mesh, Patch& patch, const RefineOptions& options,
+                                        const Progress* progress) {
   RefineResult result;
   PatchTags tags(mesh);
   result.vertex_cap = vertex_cap(mesh, patch, options.max_density);
@@ -129,7 +136,8 @@ RefineResult detail::refine_with_scales(Mesh& mesh, Patch& patch, const RefineOp
   const std::size_t vertices_before = patch.new_vertices.size();
   for (int round = 0; round < kMaxRefineRounds; ++round) {
     std::size_t splits_now = 0;
-    const Stop stop = refine_round(flat, vertices_before, options, result, splits_now);
+    const Stop stop = refine_round(flat, vertices_before, options, result, splits_now, progress);
+    if (stop == Stop::Cancelled || is_cancelled(progress)) return result;
     result.stopped_at_face_limit = stop == Stop::FaceLimit;
     result.stopped_at_vertex_cap = stop == Stop::VertexCap;
     result.splits += splits_now;
@@ -138,7 +146,8 @@ RefineResult detail::refine_with_scales(Mesh& mesh, Patch& patch, const RefineOp
     if (result.stopped_at_vertex_cap) break;
   }
   flat.write_back(mesh, tags, patch);
-  if (options.remesh) result.remeshing = remesh_patch(mesh, patch, options.remeshing);
+  if (options.remesh && !is_cancelled(progress))
+    result.remeshing = remesh_patch(mesh, patch, options.remeshing);
   return result;
 }
 

@@ -61,7 +61,8 @@ class DenseIndex {
 
 }  // namespace
 
-void smooth_patch(Mesh& mesh, const Patch& patch, const SmoothOptions& options) {
+void smooth_patch(Mesh& mesh, const Patch& patch, const SmoothOptions& options,
+                  const Progress* progress) {
   if (options.method != SmoothMethod::Umbrella) {
     throw std::invalid_argument(
         "smooth_patch smooths with the umbrella operator only (fairing: fair_patch)");
@@ -86,6 +87,7 @@ void smooth_patch(Mesh& mesh, const Patch& patch, const SmoothOptions& options) 
   }
   std::vector<Point> moved(moving);
   for (int it = 0; it < options.iterations; ++it) {
+    if (is_cancelled(progress)) return;
     for (std::size_t i = 0; i < moving; ++i) {
       const int begin = neighbour_start[i], end = neighbour_start[i + 1];
       const Point& p = position[own_index[i]];

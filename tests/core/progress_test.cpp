@@ -1,4 +1,6 @@
 // fill_holes with a Progress: it reports up to 1 and stops where a cancel leaves a consistent mesh.
+// A cancel carried by FillOptions (triangulate.progress) stops each stage and check at its first
+// look: every phase looks, the stage is undone, and the fill says it was cancelled.
 #include "holefill/progress.h"
 
 #include <gtest/gtest.h>
@@ -7,6 +9,7 @@
 
 #include "holefill/fill.h"
 #include "holefill/holes.h"
+#include "patch_intersections.h"
 #include "test_meshes.h"
 
 namespace holefill {
@@ -53,6 +56,85 @@ TEST(Progress, CancelledAfterTheFirstPatchTheMeshHoldsExactlyTheReturnedFills) {
   ASSERT_EQ(fills.size(), 1u);
   EXPECT_EQ(mesh.n_faces(), faces_before + fills[0].patch.faces.size());
   EXPECT_EQ(find_holes(mesh).size(), 2u);
+}
+
+// A sphere with one hole, its patch stepped (without a cancel) up to `stage`.
+struct SteppedHole {
+  Mesh mesh = testing::without_faces(testing::make_icosphere(3), [](const Point& c) {
+    return (c - Point(0.0, 0.0, 1.0)).norm() < 0.6;
+  });
+  Hole hole = find_holes(mesh).at(0);
+  HoleFill fill;
+  explicit SteppedHole(Stage stage) {
+    while (fill.stage() < stage) EXPECT_EQ(advance(mesh, hole, fill, {}), StageRun::Ran);
+  }
+};
+
+std::vector<Point> points_of(const Mesh& mesh) {
+  std::vector<Point> points;
+  for (const auto v : mesh.vertices()) points.push_back(mesh.point(v));
+  return points;
+}
+
+// Runs the hole's next stage with a cancelled Progress in the options: the stage fails as
+// cancelled and the mesh is exactly as before it.
+void expect_cancelled_stage_undone(SteppedHole& hole, FillOptions options) {
+  const std::vector<Point> before = points_of(hole.mesh);
+  const std::size_t faces = hole.mesh.n_faces();
+  const Stage stage = hole.fill.stage();
+  Progress progress;
+  progress.cancel();
+  options.triangulate.progress = &progress;
+  EXPECT_EQ(advance(hole.mesh, hole.hole, hole.fill, options), StageRun::Failed);
+  EXPECT_EQ(hole.fill.failure, kCancelledReason);
+  EXPECT_EQ(hole.fill.stage(), stage);
+  EXPECT_EQ(hole.mesh.n_faces(), faces);
+  EXPECT_EQ(points_of(hole.mesh), before);
+}
+
+TEST(Progress, CancelledTriangulationAddsNoPatch) {
+  SteppedHole hole(Stage::Original);
+  expect_cancelled_stage_undone(hole, {});
+  EXPECT_EQ(find_holes(hole.mesh).size(), 1u);
+}
+
+TEST(Progress, CancelledRefinementIsUndone) {
+  SteppedHole hole(Stage::Triangulated);
+  // Without the cancel this refinement adds vertices: the cancel is what stops it.
+  SteppedHole uncancelled(Stage::Refined);
+  ASSERT_GT(uncancelled.fill.refinement.splits, 0u);
+  expect_cancelled_stage_undone(hole, {});
+}
+
+TEST(Progress, CancelledSmoothingIsUndone) {
+  SteppedHole hole(Stage::Refined);
+  expect_cancelled_stage_undone(hole, {});
+}
+
+TEST(Progress, CancelledFairingIsUndoneAndDoesNotFallBackToUmbrella) {
+  SteppedHole hole(Stage::Refined);
+  FillOptions fair;
+  fair.smooth.method = SmoothMethod::Fair;
+  expect_cancelled_stage_undone(hole, fair);
+  EXPECT_EQ(hole.fill.smoothing_note, "");
+  Progress progress;
+  progress.cancel();
+  const FairResult result = fair_patch(hole.mesh, hole.fill.patch, {}, &progress);
+  EXPECT_FALSE(result.solved);
+  EXPECT_EQ(result.problem, kCancelledReason);
+}
+
+TEST(Progress, CancelledIntersectionCheckStopsBeforeTheFirstPair) {
+  // A triangle straight through the sphere's wall intersects it; a cancelled check looks at
+  // nothing.
+  const Mesh sphere = testing::make_icosphere(2);
+  const std::vector<std::array<Point, 3>> through{
+      {Point(0.0, 0.0, 0.0), Point(2.0, 0.1, 0.0), Point(2.0, -0.1, 0.05)}};
+  ASSERT_FALSE(detail::triangle_intersections(sphere, through, nullptr, nullptr).empty());
+  Progress progress;
+  progress.cancel();
+  EXPECT_TRUE(
+      detail::triangle_intersections(sphere, through, nullptr, nullptr, false, &progress).empty());
 }
 
 }  // namespace

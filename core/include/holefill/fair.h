@@ -20,6 +20,7 @@
 
 #include "holefill/mesh.h"
 #include "holefill/patch.h"
+#include "holefill/progress.h"
 
 namespace holefill {
 
@@ -39,13 +40,19 @@ struct FairResult {
 
 // Moves only patch.new_vertices. Leaves the mesh unchanged when the system cannot be solved
 // (order outside 1..3, non-finite or degenerate geometry, a singular or ill-conditioned system).
-FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options = {});
+// Once `progress` is cancelled it stops between the steps of the solve (building the operator,
+// its powers, the factorisation, the solve), the mesh unchanged and `problem` "cancelled"; the
+// factorisation itself, one call of Eigen, runs to its end.
+FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options = {},
+                      const Progress* progress = nullptr);
 
 // fair_patch on the surface made of the faces `surface` accepts (the patch's own among them):
 // the rings held fixed grow only across edges of those faces, and the operator sees only them,
 // as if the mesh ended there. For a patch that must not feel the surface beyond a sharp edge
 // (a region between continued creases, features.h).
+// Stops on a cancel as fair_patch does.
 FairResult fair_patch_within(Mesh& mesh, const Patch& patch, const FairOptions& options,
-                             const std::function<bool(FaceHandle)>& surface);
+                             const std::function<bool(FaceHandle)>& surface,
+                             const Progress* progress = nullptr);
 
 }  // namespace holefill

@@ -34,4 +34,12 @@ class Progress {
   std::function<void(double)> on_report_;
 };
 
+// The reason a stage stopped by a cancel gives (HoleFill::failure, FairResult::problem).
+inline constexpr char kCancelledReason[] = "cancelled";
+
+// Whether `progress` asks the work to stop; a null one never does.
+inline bool is_cancelled(const Progress* progress) noexcept {
+  return progress != nullptr && progress->cancelled();
+}
+
 }  // namespace holefill

@@ -11,6 +11,7 @@
 
 #include "holefill/mesh.h"
 #include "holefill/patch.h"
+#include "holefill/progress.h"
 #include "holefill/remesh.h"
 
 namespace holefill {
@@ -47,8 +48,11 @@ void assign_boundary_scales(Mesh& mesh, const Patch& patch);
 // in `patch`. Vertices and faces outside the patch are never changed; patch.stage is left to the
 // pipeline (fill.h). The splits and swaps run on a copy of the patch, written into the mesh at
 // the end; std::logic_error (no element added) if patch.faces lists a face twice, which no
-// stage does.
-RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options = {});
+// stage does. Once `progress` is cancelled the splits stop within a few milliseconds and the
+// mesh and the patch are left as they were (boundary scales aside); a cancel that comes after
+// the splits skips the remeshing pass.
+RefineResult refine_patch(Mesh& mesh, Patch& patch, const RefineOptions& options = {},
+                          const Progress* progress = nullptr);
 
 // Swaps interior patch edges until none should be swapped; returns the number of swaps. Throws
 // std::logic_error, as refine_patch, if patch.faces lists a face twice.

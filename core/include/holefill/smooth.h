@@ -6,6 +6,7 @@
 #include "holefill/fair.h"
 #include "holefill/mesh.h"
 #include "holefill/patch.h"
+#include "holefill/progress.h"
 
 namespace holefill {
 
@@ -23,8 +24,10 @@ struct SmoothOptions {
 // boundary and the original mesh never move, and patch.stage is left to the pipeline (fill.h).
 // Umbrella smoothing only: asking for fairing here (options.method == Fair) throws
 // std::invalid_argument rather than smoothing some other way; fairing is fair_patch, which can
-// fail, and the pipeline falls back to this when it does.
-void smooth_patch(Mesh& mesh, const Patch& patch, const SmoothOptions& options = {});
+// fail, and the pipeline falls back to this when it does. Once `progress` is cancelled it stops
+// before its next iteration, the mesh unchanged.
+void smooth_patch(Mesh& mesh, const Patch& patch, const SmoothOptions& options = {},
+                  const Progress* progress = nullptr);
 
 // Sum over the patch's own vertices of |U(P)|^2: what umbrella smoothing drives down.
 double umbrella_energy(const Mesh& mesh, const Patch& patch);
