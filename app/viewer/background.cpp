@@ -54,22 +54,32 @@ bool start_options(Worker& worker, Session& session, const FillOptions& options)
 
 bool start_open(Worker& worker, Session& session, FileActions& files,
                 const std::filesystem::path& path) {
-  return worker.start(kOpening + path.filename().string(), [&session, &files, path](Progress&) {
-    auto opened = std::make_shared<Session>();
-    const bool read = opened->open(path);
-    return [&session, &files, opened, read, path] {
-      if (!read) {
-        session.tell(opened->notice());
-        return;
-      }
-      session = std::move(*opened);
-      files.opened(path);
-    };
-  });
+  // The job reads into a session of its own and touches `session` and `files` only in its
+  // finishing step: a cancel sets it aside at once, however long the file takes to read.
+  return worker.start(
+      kOpening + path.filename().string(),
+      [&session, &files, path](Progress& progress) {
+        auto opened = std::make_shared<Session>();
+        const bool read = opened->open(path, &progress);
+        return [&session, &files, opened, read, path] {
+          if (!read) {
+            session.tell(opened->notice());
+            return;
+          }
+          session = std::move(*opened);
+          files.opened(path);
+        };
+      },
+      Worker::OnCancel::SetAside);
 }
 
 bool opening(const Worker& worker) {
   return worker.busy() && worker.label().rfind(kOpening, 0) == 0;
+}
+
+std::string cancelled_notice(const Worker& worker) {
+  const bool open = worker.label().rfind(kOpening, 0) == 0;
+  return worker.label() + (open ? ": cancelled" : ": cancelled, mesh unchanged");
 }
 
 }  // namespace holefill::viewer

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "file_actions.h"
 #include "session.h"
@@ -34,5 +35,8 @@ bool start_open(Worker& worker, Session& session, FileActions& files,
                 const std::filesystem::path& path);
 // Whether the worker is opening a mesh (start_open).
 bool opening(const Worker& worker);
+// What the status bar says once the worker's job is cancelled: "Filling hole 3: cancelled, mesh
+// unchanged", "Opening scan.ply: cancelled".
+std::string cancelled_notice(const Worker& worker);
 
 }  // namespace holefill::viewer

@@ -93,7 +93,8 @@ void add_options(CLI::App& app, Parsed& parsed) {
       ->check(CLI::Range(0.5f, 4.0f));
   app.add_option("--frames", c.frames,
                  "with --screenshot: render N frames (turning the view\na little each) and print "
-                 "the mean frame time")
+                 "the mean frame time: the first\nhalf whole, the second as a drag draws them "
+                 "(a big\nmesh as its coarse proxy, which the screenshot shows)")
       ->type_name("N")
       ->check(CLI::Range(4, 1'000'000))
       ->group(kScripted);

@@ -177,11 +177,15 @@ void save_screenshot(const Renderer& renderer, const Window& window,
 }
 
 // --frames' figures: the time from the start to the first frame on screen, then the mean frame
-// time while the view keeps turning (so that every frame draws anew).
+// time while the view keeps turning (so that every frame draws anew): the first half of the
+// frames draw the whole mesh, the second half the coarse proxy that a drag draws.
 class FrameTimer {
  public:
-  FrameTimer(bool enabled, std::chrono::steady_clock::time_point started)
-      : enabled_(enabled), started_(started) {}
+  FrameTimer(bool enabled, int frames, std::chrono::steady_clock::time_point started)
+      : enabled_(enabled), split_(std::max(2, frames / 2)), started_(started) {}
+
+  // Whether `frame` stands for one drawn while the camera is dragged.
+  bool coarse(int frame) const { return enabled_ && frame > split_; }
 
   void frame_drawn(int frame, Camera& camera) {
     if (!enabled_) return;
@@ -191,24 +195,35 @@ class FrameTimer {
       std::printf("first frame: %.0f ms after start (reading the mesh included)\n", first.count());
     }
     if (frame == 1) timer_start_ = Clock::now();
+    if (frame == split_) {
+      glFinish();
+      split_at_ = Clock::now();
+    }
     if (frame >= 1) {
       camera.begin_orbit(camera.viewport() * 0.5f);
       camera.orbit_to(camera.viewport() * 0.5f + glm::vec2(2.0f, 0.0f));
     }
   }
 
-  void report(int frame, std::size_t triangles) const {
-    if (!enabled_ || frame < 2) return;
+  void report(int frame, std::size_t triangles, std::size_t proxy_triangles) const {
+    if (!enabled_ || frame <= split_) return;
     glFinish();
-    const std::chrono::duration<double, std::milli> spent = Clock::now() - timer_start_;
+    const std::chrono::duration<double, std::milli> whole = split_at_ - timer_start_;
+    const std::chrono::duration<double, std::milli> coarse = Clock::now() - split_at_;
     std::printf("frame time: %.1f ms mean over %d frames (%zu triangles)\n",
-                spent.count() / (frame - 1), frame - 1, triangles);
+                whole.count() / (split_ - 1), split_ - 1, triangles);
+    std::printf("frame time while dragging: %.1f ms mean over %d frames (%s)\n",
+                coarse.count() / (frame - split_), frame - split_,
+                proxy_triangles
+                    ? (std::to_string(proxy_triangles) + " triangles of the proxy").c_str()
+                    : "no proxy: the whole mesh");
   }
 
  private:
   using Clock = std::chrono::steady_clock;
   bool enabled_;
-  Clock::time_point started_, timer_start_;
+  int split_;
+  Clock::time_point started_, timer_start_, split_at_;
 };
 
 // What the loop carries from frame to frame, and one step of it per method.
@@ -222,12 +237,18 @@ class FrameLoop {
         session_(session),
         files_(files),
         worker_(worker),
-        timer_(command.report_frame_time, started),
+        timer_(command.report_frame_time, command.frames, started),
         title_(files.window_title()),
         state_(command.state_file) {
     ui_.content_scale = command.ui_scale > 0.0f ? command.ui_scale : window.content_scale();
     apply_ui_scale(ui_.scale = ui_scale(ui_.content_scale, ui_.zoom));
+    // A job that ends wakes the loop: its result (or its cancel) shows at once, not after the
+    // pause between busy frames, which lasts a whole frame when frames are slow.
+    worker_.set_on_done([] { Window::wake(); });
   }
+  ~FrameLoop() { worker_.set_on_done({}); }  // the window goes before the worker's threads
+  FrameLoop(const FrameLoop&) = delete;
+  FrameLoop& operator=(const FrameLoop&) = delete;
 
   // Reads the mesh on the worker (when not read yet), routes dropped and chosen files there.
   void start(const std::filesystem::path& mesh_path, bool read_first) {
@@ -257,7 +278,8 @@ class FrameLoop {
       update_view(area);
       const glm::ivec2 framebuffer = window_.framebuffer_size();
       renderer_.render(session_, camera_, to_framebuffer(area, window_), framebuffer.x,
-                       framebuffer.y, ui_.display, interaction_.hovered());
+                       framebuffer.y, ui_.display, interaction_.hovered(),
+                       interaction_.moving_camera() || timer_.coarse(frame));
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       take_requested_screenshot();
       timer_.frame_drawn(frame, camera_);
@@ -340,7 +362,7 @@ class FrameLoop {
     // from this moment on: say so now, and drop what waited for it.
     if (worker_.cancelling() && !cancel_told_) {
       cancel_told_ = true;
-      session_.tell({worker_.label() + ": cancelled, mesh unchanged", false});
+      session_.tell({cancelled_notice(worker_), false});
       waiting_.clear();
     }
     if (files_.take_mesh_opened()) mesh_opened(camera_, session_, ui_);
@@ -364,6 +386,9 @@ class FrameLoop {
   // and --frames draw every frame.
   void wait_for_events(int frames) {
     if (scripted_ || command_.report_frame_time) return;
+    // A job that ended during the frame may have woken a wait that the frame's own event poll
+    // took: its result is not to wait for the next pause.
+    if (worker_.ended()) return;
     for (;;) {
       const auto wait = pacer_.wait_before_frame(working());
       if ((wait && *wait == 0.0) || window_.should_close()) return;
@@ -426,7 +451,7 @@ class FrameLoop {
   }
 
   void finish_script(int frame) {
-    timer_.report(frame, session_.mesh().n_faces());
+    timer_.report(frame, session_.mesh().n_faces(), renderer_.proxy_triangles());
     try {
       save_screenshot(renderer_, window_, command_.screenshot);
     } catch (const std::exception& error) {

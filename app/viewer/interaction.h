@@ -53,6 +53,8 @@ class Interaction {
   void handle(const InputEvent& event, const SceneArea& area, bool ui_wants_mouse,
               bool ui_wants_keyboard, Camera& camera, Session& session);
   int hovered() const { return hovered_; }
+  // Whether a drag is turning or panning the camera (a big mesh is then drawn coarse).
+  bool moving_camera() const { return drag_ == Drag::Orbit || drag_ == Drag::Pan; }
   // The requests since the last call, in order.
   std::vector<Request> take_requests();
 

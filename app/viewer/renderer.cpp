@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "coarse_proxy.h"
 #include "palette.h"
 
 namespace holefill::viewer {
@@ -33,6 +34,12 @@ void upload(Layer& layer, const Mesh& mesh, const Session& session,
             const std::vector<const HoleFill*>& fills) {
   const SurfaceArrays arrays = surface_arrays(mesh, fills);
   layer.surface.upload(arrays);
+  layer.proxy_triangles = 0;
+  if (arrays.triangles.size() / 3 > kProxyAboveTriangles) {
+    const SurfaceArrays proxy = coarse_proxy(arrays, kProxyTriangles);
+    layer.proxy.upload(proxy);
+    layer.proxy_triangles = proxy.triangles.size() / 3;
+  }
   std::vector<Hole> holes, borders;
   for (const auto& hole : session.holes()) {
     (session.is_border(hole.id) ? borders : holes).push_back(hole);
@@ -82,8 +89,11 @@ void Renderer::sync(Session& session) {
 
 void Renderer::render(Session& session, const Camera& camera, const PixelRect& scene,
                       int framebuffer_width, int framebuffer_height, const DisplayOptions& display,
-                      int hovered_hole) {
+                      int hovered_hole, bool camera_moving) {
   sync(session);
+  const bool coarse = camera_moving && (session.shown_comparison() ? left_.proxy_triangles > 0 ||
+                                                                         right_.proxy_triangles > 0
+                                                                   : main_.proxy_triangles > 0);
   SceneKey key{camera.view(),
                camera.projection(),
                {scene.x, scene.y, scene.width, scene.height},
@@ -95,7 +105,8 @@ void Renderer::render(Session& session, const Camera& camera, const PixelRect& s
                hovered_hole,
                session.joined(),
                {display.wireframe, display.flat, display.patch_vertices, display.feature_lines},
-               session.features_version()};
+               session.features_version(),
+               coarse};
   if (cache_.show(key)) return;
   cache_.begin(key);
   glViewport(0, 0, framebuffer_width, framebuffer_height);
@@ -109,13 +120,13 @@ void Renderer::render(Session& session, const Camera& camera, const PixelRect& s
     clear_rect(left, framebuffer_height, palette::kBackground);
     clear_rect(right, framebuffer_height, palette::kBackground);
     const Highlight highlight{session.selected(), &session.joined(), -1};
-    draw_view(left_, half, left, framebuffer_height, display, highlight);
-    draw_view(right_, half, right, framebuffer_height, display, highlight);
+    draw_view(left_, half, left, framebuffer_height, display, highlight, coarse);
+    draw_view(right_, half, right, framebuffer_height, display, highlight, coarse);
   } else {
     Camera whole = camera;
     whole.set_viewport({static_cast<float>(scene.width), static_cast<float>(scene.height)});
     draw_view(main_, whole, scene, framebuffer_height, display,
-              {session.selected(), &session.joined(), hovered_hole});
+              {session.selected(), &session.joined(), hovered_hole}, coarse);
   }
   glViewport(0, 0, framebuffer_width, framebuffer_height);
   cache_.end();
@@ -123,7 +134,7 @@ void Renderer::render(Session& session, const Camera& camera, const PixelRect& s
 
 void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const PixelRect& rect,
                          int framebuffer_height, const DisplayOptions& display,
-                         const Highlight& highlight) {
+                         const Highlight& highlight, bool coarse) {
   glViewport(rect.x, framebuffer_height - rect.y - rect.height, rect.width, rect.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
@@ -131,14 +142,18 @@ void Renderer::draw_view(const MeshLayer& layer, const Camera& camera, const Pix
   glDisable(GL_BLEND);
   const ViewTransform transform{camera.view(), camera.projection(),
                                 camera.pixel_size_at_unit_depth(), 0.004f * layer.radius};
-  draw_surface(layer, transform, display);
-  draw_edges_and_dots(layer, transform, rect, display);
+  if (coarse && layer.proxy_triangles > 0) {
+    draw_surface(layer.proxy, transform, display);  // no wireframe or dots: a proxy has neither
+  } else {
+    draw_surface(layer.surface, transform, display);
+    draw_edges_and_dots(layer, transform, rect, display);
+  }
   draw_outlines(layer, transform, rect, highlight);
   if (display.feature_lines) draw_features(layer, transform, rect);
   glDisable(GL_DEPTH_TEST);
 }
 
-void Renderer::draw_surface(const MeshLayer& layer, const ViewTransform& transform,
+void Renderer::draw_surface(const MeshBuffers& surface, const ViewTransform& transform,
                             const DisplayOptions& display) {
   // The surface is pushed back a little so that edges and dots drawn on it win the depth test.
   glEnable(GL_POLYGON_OFFSET_FILL);
@@ -151,7 +166,7 @@ void Renderer::draw_surface(const MeshLayer& layer, const ViewTransform& transfo
   const glm::vec3 stage_colors[4] = {rgb(palette::kSurface), rgb(palette::kTriangulated),
                                      rgb(palette::kRefined), rgb(palette::kSmoothed)};
   surface_program_.set("u_stage_colors", stage_colors, 4);
-  layer.surface.draw_surface(0);
+  surface.draw_surface(0);
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 

@@ -28,9 +28,14 @@ class Renderer {
   Renderer();
 
   // Draws the session's scene into `scene` of a `framebuffer_height`-tall framebuffer: one view,
-  // or the comparison's two side by side sharing `camera`'s pose.
+  // or the comparison's two side by side sharing `camera`'s pose. `camera_moving`: a big mesh is
+  // drawn as its coarse proxy (coarse_proxy.h), without wireframe and dots, so that the view
+  // follows the mouse; the next frame without it draws the whole mesh again.
   void render(Session& session, const Camera& camera, const PixelRect& scene, int framebuffer_width,
-              int framebuffer_height, const DisplayOptions& display, int hovered_hole);
+              int framebuffer_height, const DisplayOptions& display, int hovered_hole,
+              bool camera_moving = false);
+  // Triangles of the main mesh's proxy (0: it has none, being small enough to draw whole).
+  std::size_t proxy_triangles() const { return main_.proxy_triangles; }
 
   // The two halves the comparison view splits `scene` into.
   static std::pair<PixelRect, PixelRect> comparison_halves(const PixelRect& scene);
@@ -41,6 +46,8 @@ class Renderer {
  private:
   struct MeshLayer {
     MeshBuffers surface;
+    MeshBuffers proxy;  // drawn while the camera moves, when proxy_triangles > 0
+    std::size_t proxy_triangles = 0;
     BoundaryBuffers boundary;
     BoundaryBuffers borders;  // loops that look like the border of an open surface
     // The selected hole's feature lines and their continuations (main view only).
@@ -71,8 +78,9 @@ class Renderer {
   void sync(Session& session);
   // One view: the surface, then the wireframe and new-vertex dots, then the loops' outlines.
   void draw_view(const MeshLayer& layer, const Camera& camera, const PixelRect& rect,
-                 int framebuffer_height, const DisplayOptions& display, const Highlight& highlight);
-  void draw_surface(const MeshLayer& layer, const ViewTransform& transform,
+                 int framebuffer_height, const DisplayOptions& display, const Highlight& highlight,
+                 bool coarse);
+  void draw_surface(const MeshBuffers& surface, const ViewTransform& transform,
                     const DisplayOptions& display);
   void draw_edges_and_dots(const MeshLayer& layer, const ViewTransform& transform,
                            const PixelRect& rect, const DisplayOptions& display);

@@ -28,6 +28,7 @@ struct SceneKey {
   std::vector<int> joined;
   bool display[4] = {false, false, false, false};  // wireframe, flat, patch vertices, features
   std::uint64_t features_version = 0;
+  bool coarse = false;  // drawn as the proxy (the camera moves)
   bool operator==(const SceneKey&) const = default;
 };
 

@@ -35,12 +35,19 @@ std::string change_notice(LogChange::Kind kind, int selected) {
 
 }  // namespace
 
-bool Session::open(const std::filesystem::path& path) {
+bool Session::open(const std::filesystem::path& path, Progress* progress) {
+  // Whether to go on after a phase that took this share of the work.
+  const auto go_on = [progress](double done) {
+    if (progress) progress->set_fraction(done);
+    return !is_cancelled(progress);
+  };
   try {
     LoadReport report;
     Mesh mesh = load_mesh(path, &report);
+    if (!go_on(0.6)) return false;
     // The command-line tool's preparation, with its defaults (holefill/prepare.h).
     PreparedMesh prepared = prepare_mesh(mesh);
+    if (!go_on(0.9)) return false;
     std::string text = "Opened " + path.string();
     for (const auto& warning : report.warnings) text += "\n" + warning;
     for (const auto& line : prepared.messages) text += "\n" + line;

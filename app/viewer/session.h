@@ -92,8 +92,10 @@ struct ComparisonResult {
 
 class Session {
  public:
-  // Opens a mesh file. On failure the current mesh stays and notice() says why.
-  bool open(const std::filesystem::path& path);
+  // Opens a mesh file. On failure the current mesh stays and notice() says why. With `progress`:
+  // reports the read (0.6) and the preparation (0.9) done, and once cancelled stops after the
+  // one under way (false, the session unchanged).
+  bool open(const std::filesystem::path& path, Progress* progress = nullptr);
   // Starts over on `mesh` (named `name` in the UI), taken as it is: holes found, nothing stitched
   // or welded (open() prepares a file's mesh as the command-line tool does).
   void load(Mesh mesh, std::string name);

@@ -140,6 +140,8 @@ bool Window::wait(std::optional<double> seconds) {
   return woken_;
 }
 
+void Window::wake() { glfwPostEmptyEvent(); }
+
 std::vector<InputEvent> Window::poll() {
   woken_ = false;
   glfwPollEvents();

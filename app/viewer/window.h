@@ -29,6 +29,9 @@ class Window {
   // Sleeps until the window system has an event for the window (input, a resize, an expose, a
   // close request) or `seconds` pass (nothing: no limit). True when an event came.
   bool wait(std::optional<double> seconds);
+  // Ends a wait() under way (or the next one) at once, from any thread: work that ended wakes
+  // the frame loop rather than waiting out the pause between frames. Returns false from wait().
+  static void wake();
   // Processes pending input and returns what happened since the last call.
   std::vector<InputEvent> poll();
   // Whether the last poll() processed any event (input or not): what it changed needs frames

@@ -4,8 +4,8 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <exception>
-#include <memory>
 #include <utility>
 
 namespace holefill::viewer {
@@ -24,42 +24,70 @@ void yield_to_the_window() {
 
 Worker::~Worker() {
   cancel();
-  if (thread_.joinable()) thread_.join();
+  if (running_) running_->thread.join();
+  for (auto& aside : set_aside_) aside.thread.join();
 }
 
-bool Worker::start(std::string label, Job job) {
+bool Worker::start(std::string label, Job job, OnCancel on_cancel) {
   if (busy()) return false;
   label_ = std::move(label);
   error_.clear();
-  progress_ = std::make_unique<Progress>();
-  done_ = false;
+  set_aside_unreported_ = false;
+  last_ = std::make_shared<State>();
   started_ = std::chrono::steady_clock::now();
-  thread_ = std::thread([this, job = std::move(job), progress = progress_.get()] {
+  // The thread keeps its own references: a job set aside outlives its place here.
+  std::thread thread([job = std::move(job), state = last_, on_done = on_done_] {
     yield_to_the_window();
     try {
-      finish_ = job(*progress);
+      state->finish = job(state->progress);
     } catch (const std::exception& error) {
-      error_ = error.what();
+      state->error = error.what();
     }
-    done_ = true;  // publishes finish_ and error_ to poll()
+    state->done = true;  // publishes finish and error to poll()
+    const std::lock_guard lock(on_done->mutex);
+    if (on_done->call) on_done->call();
   });
+  running_ = Running{std::move(thread), last_, on_cancel};
   return true;
 }
 
 void Worker::cancel() {
-  if (progress_) progress_->cancel();
+  if (!running_) return;
+  running_->state->progress.cancel();
+  if (running_->on_cancel != OnCancel::SetAside) return;
+  set_aside_.push_back(std::move(*running_));
+  running_.reset();
+  set_aside_unreported_ = true;
 }
 
 bool Worker::poll() {
-  if (!busy() || !done_) return false;
-  thread_.join();
-  Finish finish = std::exchange(finish_, {});
-  if (finish && !progress_->cancelled()) finish();
+  // Threads set aside are joined once they have ended, so none is left behind.
+  std::erase_if(set_aside_, [](Running& aside) {
+    if (!aside.state->done) return false;
+    aside.thread.join();
+    return true;
+  });
+  if (set_aside_unreported_) {
+    set_aside_unreported_ = false;
+    return true;
+  }
+  if (!running_ || !running_->state->done) return false;
+  running_->thread.join();
+  const std::shared_ptr<State> state = std::move(running_->state);
+  running_.reset();
+  error_ = std::move(state->error);
+  Finish finish = std::exchange(state->finish, {});
+  if (finish && !state->progress.cancelled()) finish();
   return true;
 }
 
 double Worker::seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+}
+
+void Worker::set_on_done(std::function<void()> on_done) {
+  const std::lock_guard lock(on_done_->mutex);
+  on_done_->call = std::move(on_done);
 }
 
 }  // namespace holefill::viewer

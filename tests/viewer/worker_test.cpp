@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <filesystem>
 #include <stdexcept>
 #include <thread>
@@ -45,6 +46,60 @@ TEST(Worker, CancelDropsTheResult) {
   EXPECT_TRUE(worker.busy() || !finished);
   wait(worker);
   EXPECT_FALSE(finished);
+}
+
+TEST(Worker, ACancelledJobSetAsideFreesTheWorkerAtOnce) {
+  std::atomic<bool> release{false};
+  bool finished = false;
+  {
+    Worker worker;
+    // The job does not look at its Progress: only setting it aside frees the worker.
+    ASSERT_TRUE(worker.start(
+        "reading",
+        [&](Progress&) -> Worker::Finish {
+          while (!release) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+          return [&] { finished = true; };
+        },
+        Worker::OnCancel::SetAside));
+    worker.cancel();
+    EXPECT_FALSE(worker.busy());
+    EXPECT_TRUE(worker.cancelling());
+    EXPECT_TRUE(worker.poll());  // the end is reported once
+    EXPECT_FALSE(worker.cancelling());
+    EXPECT_TRUE(worker.cancelled());
+    EXPECT_FALSE(worker.poll());
+    bool second = false;
+    ASSERT_TRUE(
+        worker.start("next", [&](Progress&) -> Worker::Finish { return [&] { second = true; }; }));
+    wait(worker);
+    EXPECT_TRUE(second);
+    release = true;
+  }  // the destructor waits for the job set aside
+  EXPECT_FALSE(finished);
+}
+
+TEST(Worker, EachJobsEndIsAnnouncedOnItsThread) {
+  Worker worker;
+  std::atomic<int> ended{0};
+  worker.set_on_done([&] { ++ended; });
+  worker.start("one", [](Progress&) { return Worker::Finish{}; });
+  wait(worker);
+  EXPECT_EQ(ended, 1);
+  worker.start("two", [](Progress&) { return Worker::Finish{}; });
+  wait(worker);
+  EXPECT_EQ(ended, 2);
+}
+
+TEST(Background, ACancelledOpenLeavesTheSessionAlone) {
+  Session session;
+  ASSERT_TRUE(session.open(kAssets / "bunny.obj"));
+  const std::size_t faces = session.mesh().n_faces();
+  Session opened;
+  Progress progress;
+  progress.cancel();
+  EXPECT_FALSE(opened.open(kAssets / "bunny.obj", &progress));
+  EXPECT_EQ(opened.mesh().n_faces(), 0u);
+  EXPECT_EQ(session.mesh().n_faces(), faces);
 }
 
 TEST(Worker, AnExceptionBecomesTheError) {
