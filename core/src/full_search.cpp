@@ -14,7 +14,6 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -287,17 +286,6 @@ class HelperThreads {
   int count_ = 0;
 };
 
-// The cores that other processes leave to this search (the calling thread counted as free), by
-// the one-minute load average. On a busy machine the rows' threads are descheduled in turn and
-// the rows wait for each other: two threads sharing two cores with five other processes took
-// 1.5x as long as one thread (bench/NOTEBOOK.md).
-int idle_cores() {
-  const int cores = static_cast<int>(available_cores());
-  double load = 0.0;
-  if (getloadavg(&load, 1) != 1) return cores;
-  return std::clamp(static_cast<int>(std::floor(cores + 1 - load)), 1, cores);
-}
-
 template <bool kPrune, class Weight>
 std::optional<PolygonTriangulation> solve(const HolePolygon& polygon, const Weight& weight,
                                           int threads, const TriangulateOptions& options) {
@@ -347,7 +335,11 @@ std::optional<PolygonTriangulation> full_search(const HolePolygon& polygon,
   const int n = static_cast<int>(polygon.points.size());
   const int strips = std::max(1, (n - 2 + kStripRows - 1) / kStripRows);
   const bool automatic = options.threads == 0;
-  const int wanted = automatic ? (n < kParallelMinEdges ? 1 : idle_cores())
+  // Automatic threads: every core this process may run on, shared with the searches running at
+  // the same time, the scheduling left to the system. A guess at what other processes leave
+  // free (the load average lags by a minute: a search started on a just-quiet machine ran on one
+  // thread) would only hide the cores; a caller that knows the machine is busy asks for fewer.
+  const int wanted = automatic ? (n < kParallelMinEdges ? 1 : static_cast<int>(available_cores()))
                                : static_cast<int>(std::min<unsigned>(options.threads, strips));
   // Threads asked for explicitly are the caller's business; automatic ones share the cores.
   const HelperThreads helpers(automatic ? wanted - 1 : 0);

@@ -62,8 +62,8 @@ struct TriangulateOptions {
   bool prune = true;
   RestrictedSearch restricted{};
   // Threads for the full search: 0 chooses (one for small holes, where threads cost more than
-  // they save, else every core that other searches running at the same time leave free); n uses
-  // n. The triangulation is the same whatever the number.
+  // they save, else every core this process may run on, shared with the searches running at the
+  // same time); n uses n. The triangulation is the same whatever the number.
   unsigned threads = 0;
   // Checked between rows of the full search and between batches of the restricted one's chords:
   // once cancelled, the search stops and returns nothing (progress->cancelled() tells that from
