@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "cancellable_ldlt.h"
 #include "deletion_flags.h"
 
 namespace holefill {
@@ -212,11 +213,10 @@ std::string solve(Mesh& mesh, const Region& region, const FairOptions& options,
   const SparseMatrix on_fixed = system.block(0, unknowns, unknowns, fixed);
   const Eigen::MatrixXd rhs = -(on_fixed * positions.bottomRows(fixed));
 
-  Eigen::SimplicialLDLT<SparseMatrix> solver;
+  detail::CancellableLdlt solver;
   solver.analyzePattern(on_unknowns);
   if (is_cancelled(progress)) return kCancelledReason;
-  solver.factorize(on_unknowns);
-  if (is_cancelled(progress)) return kCancelledReason;
+  if (!solver.factorize_unless_cancelled(on_unknowns, progress)) return kCancelledReason;
   if (solver.info() != Eigen::Success) {
     return "the fairing system could not be factorised (singular or not positive)";
   }

@@ -107,13 +107,15 @@ std::vector<Patch> crease_regions(const Mesh& mesh, const Patch& patch,
 
 RefineResult refine_between_creases(Mesh& mesh, Patch& patch,
                                     const std::vector<std::vector<VertexHandle>>& creases,
-                                    const RefineOptions& options) {
+                                    const RefineOptions& options, const Progress* progress) {
+  enter_phase(progress, phase::kRefiningBetweenCreases);
   assign_boundary_scales(mesh, patch);
   assign_crease_scales(mesh, patch, creases);
   RefineResult total;
   for (Patch& region : crease_regions(mesh, patch, creases)) {
+    if (is_cancelled(progress)) break;
     const std::size_t faces = region.faces.size(), vertices = region.new_vertices.size();
-    const RefineResult result = refine_with_scales(mesh, region, options);
+    const RefineResult result = refine_with_scales(mesh, region, options, progress);
     patch.faces.insert(patch.faces.end(), region.faces.begin() + faces, region.faces.end());
     patch.new_vertices.insert(patch.new_vertices.end(), region.new_vertices.begin() + vertices,
                               region.new_vertices.end());

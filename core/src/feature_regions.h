@@ -20,9 +20,12 @@ std::vector<Patch> crease_regions(const Mesh& mesh, const Patch& patch,
 
 // refine_patch on each region, with the boundary scales of the whole patch and, on a crease
 // vertex, the mean length of its crease edges; the new faces and vertices are added to `patch`.
+// It enters phase::kRefiningBetweenCreases; once `progress` is cancelled it stops as
+// refine_patch does, and the regions after are left as they are.
 RefineResult refine_between_creases(Mesh& mesh, Patch& patch,
                                     const std::vector<std::vector<VertexHandle>>& creases,
-                                    const RefineOptions& options);
+                                    const RefineOptions& options,
+                                    const Progress* progress = nullptr);
 
 // The faces fairing may use around `region`: its own, and the mesh's faces reached from them
 // within a few rings without crossing a crease edge or a sharp edge (features.h).

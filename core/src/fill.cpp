@@ -133,10 +133,10 @@ bool refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
     std::string problem;
     fill.times.refine_seconds += timed([&] {
       try {
-        fill.refinement =
-            fill.creases.empty()
-                ? refine_patch(mesh, fill.patch, refine, progress_of(options))
-                : detail::refine_between_creases(mesh, fill.patch, fill.creases, refine);
+        fill.refinement = fill.creases.empty()
+                              ? refine_patch(mesh, fill.patch, refine, progress_of(options))
+                              : detail::refine_between_creases(mesh, fill.patch, fill.creases,
+                                                               refine, progress_of(options));
       } catch (const std::bad_alloc&) {
         problem = "not enough memory";
       }

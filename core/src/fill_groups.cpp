@@ -54,7 +54,8 @@ std::vector<HoleFill> fill_groups(Mesh& mesh, const std::vector<Hole>& holes,
     regions.push_back(neighbourhood_of(mesh, plan.polygon.vertices));
   }
   reserve_patch_room(mesh, estimate);
-  MeshFaceIndex index(mesh, regions, total_threads);
+  MeshFaceIndex index(mesh, regions, total_threads, progress);
+  if (cancelled()) return {};  // the index is incomplete
   index.set_threads(std::max(1u, total_threads / threads));
   std::vector<PatchApart> aparts(count);
   std::atomic<std::size_t> done{0};

@@ -42,7 +42,11 @@ StageRun FillSequence::step(const std::vector<const Hole*>& loops, HoleFill& fil
       }
       regions.push_back(detail::neighbourhood_of(mesh_, vertices));
     }
-    index_ = std::make_unique<detail::MeshFaceIndex>(mesh_, regions);
+    const Progress* progress = options.triangulate.progress;
+    index_ = std::make_unique<detail::MeshFaceIndex>(mesh_, regions, 1, progress);
+    // Cancelled while filing, the index is incomplete: the step below fails as cancelled at its
+    // first look without it, and a later step files again.
+    if (is_cancelled(progress)) index_.reset();
   }
   current_fill_ = &fill;
   const StageRun run = detail::advance_unscaled(mesh_, loops, fill, options, index_.get());

@@ -176,17 +176,20 @@ Box neighbourhood_of(const Mesh& mesh, const std::vector<VertexHandle>& loop) {
   return loop.empty() ? box : grown_by_extent(box);
 }
 
-MeshFaceIndex::MeshFaceIndex(const Mesh& mesh, const std::vector<Box>& regions, unsigned threads)
+MeshFaceIndex::MeshFaceIndex(const Mesh& mesh, const std::vector<Box>& regions, unsigned threads,
+                             const Progress* progress)
     : mesh_(mesh), indexed_faces_(static_cast<int>(mesh.n_faces())) {
+  enter_phase(progress, phase::kIndexingFaces);
   std::vector<Box> finite;
   std::copy_if(regions.begin(), regions.end(), std::back_inserter(finite), is_finite);
   // Patches' faces added later are filed in cells of a hole's neighbourhood's size, so that a
   // lookup across one neighbourhood touches a few cells.
   added_ = BoxBuckets(mean_region_extent(finite));
-  if (!finite.empty()) file_faces_near(std::move(finite), threads);
+  if (!finite.empty()) file_faces_near(std::move(finite), threads, progress);
 }
 
-void MeshFaceIndex::file_faces_near(std::vector<Box> regions, unsigned threads) const {
+void MeshFaceIndex::file_faces_near(std::vector<Box> regions, unsigned threads,
+                                    const Progress* progress) const {
   Part part{std::move(regions), false, FaceGrid({}), FaceGrid({})};
   part.everywhere = !std::all_of(part.regions.begin(), part.regions.end(), is_finite);
   if (!part.everywhere) {
@@ -204,6 +207,7 @@ void MeshFaceIndex::file_faces_near(std::vector<Box> regions, unsigned threads) 
   std::vector<std::vector<std::pair<int, Box>>> blocks(
       static_cast<std::size_t>((faces + kFacesPerBlock - 1) / kFacesPerBlock));
   for_each_index(blocks.size(), threads, [&](std::size_t block) {
+    if (is_cancelled(progress)) return;  // the blocks left are skipped: the index is dropped
     const int begin = static_cast<int>(block) * kFacesPerBlock;
     for (int f = begin; f < std::min(faces, begin + kFacesPerBlock); ++f) {
       const FaceHandle face(f);
@@ -212,6 +216,7 @@ void MeshFaceIndex::file_faces_near(std::vector<Box> regions, unsigned threads) 
       if (part.everywhere || cells->overlaps_region(box)) blocks[block].emplace_back(f, box);
     }
   });
+  if (is_cancelled(progress)) return;
   std::vector<std::pair<int, Box>> boxes;
   std::size_t filed = 0;
   for (const auto& block : blocks) filed += block.size();

@@ -12,6 +12,7 @@
 #include "box_buckets.h"
 #include "face_grid.h"
 #include "holefill/mesh.h"
+#include "holefill/progress.h"
 
 namespace holefill::detail {
 
@@ -26,8 +27,11 @@ class MeshFaceIndex {
   // mesh, the faces near `regions`. The mesh must outlive the index, and the faces indexed must
   // keep their indices and corners (filling only adds faces after them); faces added to the mesh
   // later are found only once add() is told of them. The pass runs on up to `threads` threads
-  // (the faces in blocks, filed in order: the same index on any number).
-  MeshFaceIndex(const Mesh& mesh, const std::vector<Box>& regions, unsigned threads = 1);
+  // (the faces in blocks, filed in order: the same index on any number). It enters
+  // phase::kIndexingFaces and, once `progress` is cancelled, stops at the next block of faces:
+  // the index is then incomplete, and the caller must drop it unused.
+  MeshFaceIndex(const Mesh& mesh, const std::vector<Box>& regions, unsigned threads = 1,
+                const Progress* progress = nullptr);
 
   // An entry added after the index was made (a finished patch's face, id = its index): found by
   // every lookup whose box it overlaps.
@@ -75,7 +79,8 @@ class MeshFaceIndex {
     std::size_t faces = 0;
   };
   const Part& part_holding(const Box& box) const;
-  void file_faces_near(std::vector<Box> regions, unsigned threads = 1) const;
+  void file_faces_near(std::vector<Box> regions, unsigned threads = 1,
+                       const Progress* progress = nullptr) const;
 
   const Mesh& mesh_;
   int indexed_faces_;                // the faces below this index (those not deleted) are indexed

@@ -41,8 +41,8 @@ struct FairResult {
 // Moves only patch.new_vertices. Leaves the mesh unchanged when the system cannot be solved
 // (order outside 1..3, non-finite or degenerate geometry, a singular or ill-conditioned system).
 // Once `progress` is cancelled it stops between the steps of the solve (building the operator,
-// its powers, the factorisation, the solve), the mesh unchanged and `problem` "cancelled"; the
-// factorisation itself, one call of Eigen, runs to its end.
+// its powers, the factorisation, the solve) and inside the factorisation (phase::kFactorising,
+// between the rows of its factor), the mesh unchanged and `problem` "cancelled".
 FairResult fair_patch(Mesh& mesh, const Patch& patch, const FairOptions& options = {},
                       const Progress* progress = nullptr);
 

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <functional>
+#include <string_view>
 #include <utility>
 
 namespace holefill {
@@ -16,6 +17,10 @@ class Progress {
   // `on_report` is called with each fraction the work sets, on the work's thread(s), possibly
   // several at once: it must be thread-safe. It may call cancel().
   explicit Progress(std::function<void(double)> on_report) : on_report_(std::move(on_report)) {}
+  // `on_phase` is also called, on the work's thread, with the name of each long phase (the
+  // constants below) as the work enters it: a watcher may show it, and a test may cancel there.
+  Progress(std::function<void(double)> on_report, std::function<void(std::string_view)> on_phase)
+      : on_report_(std::move(on_report)), on_phase_(std::move(on_phase)) {}
 
   // Asks the work to stop at its next check. Any thread, any time.
   void cancel() noexcept { cancelled_.store(true, std::memory_order_relaxed); }
@@ -28,11 +33,26 @@ class Progress {
   }
   double fraction() const noexcept { return fraction_.load(std::memory_order_relaxed); }
 
+  // Said by the work as it enters a long phase (the work holds a const Progress).
+  void enter_phase(std::string_view phase) const {
+    if (on_phase_) on_phase_(phase);
+  }
+
  private:
   std::atomic<bool> cancelled_{false};
   std::atomic<double> fraction_{0.0};
   std::function<void(double)> on_report_;
+  std::function<void(std::string_view)> on_phase_;
 };
+
+// The long phases that say so (Progress::enter_phase), each of which looks at the cancel within
+// a few hundred milliseconds.
+namespace phase {
+inline constexpr std::string_view kReading = "reading";               // load_mesh's parse
+inline constexpr std::string_view kIndexingFaces = "indexing faces";  // before a fill's checks
+inline constexpr std::string_view kRefiningBetweenCreases = "refining between creases";
+inline constexpr std::string_view kFactorising = "factorising";  // fairing's system
+}  // namespace phase
 
 // The reason a stage stopped by a cancel gives (HoleFill::failure, FairResult::problem).
 inline constexpr char kCancelledReason[] = "cancelled";
@@ -40,6 +60,11 @@ inline constexpr char kCancelledReason[] = "cancelled";
 // Whether `progress` asks the work to stop; a null one never does.
 inline bool is_cancelled(const Progress* progress) noexcept {
   return progress != nullptr && progress->cancelled();
+}
+
+// progress->enter_phase(phase) unless `progress` is null.
+inline void enter_phase(const Progress* progress, std::string_view phase) {
+  if (progress) progress->enter_phase(phase);
 }
 
 }  // namespace holefill
