@@ -170,9 +170,11 @@ void draw_progress(Worker& worker, const FrameKeys& keys, float left, float righ
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
   const bool cancelling = worker.cancelling();
+  const std::string phase = worker.phase();
   ImGui::Text("%s%s  %.1f s", worker.label().c_str(),
               cancelling ? ": cancelled, stopping (the mesh stays as it was)" : "...",
               worker.seconds());
+  if (!cancelling && !phase.empty()) ImGui::TextDisabled("%s", phase.c_str());
   ImGui::ProgressBar(static_cast<float>(worker.fraction()), ImVec2(-1.0f, 0.0f));
   ImGui::BeginDisabled(cancelling);
   if (ImGui::Button("Cancel (Esc)") || keys.pressed(kKeyEscape)) worker.cancel();

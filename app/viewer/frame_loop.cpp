@@ -415,6 +415,7 @@ class FrameLoop {
     state.dialog = files_.dialog().has_value();
     state.title = title_;
     state.notice = session_.notice().text;
+    state.phase = worker_.busy() ? worker_.phase() : "";
     state_.update(state);
   }
 

@@ -20,7 +20,7 @@ std::string format_state(const ViewerState& state) {
          "\ncloses " + std::to_string(state.closes) + "\nidle " + (state.idle ? "1" : "0") +
          "\nbusy " + (state.busy ? "1" : "0") + "\nwaiting " + std::to_string(state.waiting) +
          "\nquestion " + state.question + "\ndialog " + (state.dialog ? "1" : "0") + "\ntitle " +
-         state.title + "\nnotice " + notice + "\n";
+         state.title + "\nnotice " + notice + "\nphase " + state.phase + "\n";
 }
 
 void StateReport::update(const ViewerState& state) {

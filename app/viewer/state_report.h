@@ -20,6 +20,7 @@ struct ViewerState {
   bool dialog = false;   // a file dialog shows
   std::string title;     // the window's title
   std::string notice;    // the status bar's message (its first line)
+  std::string phase;     // the long phase the worker's job is in (Worker::phase), or empty
 };
 
 // One "name value" line per field, in the order above.

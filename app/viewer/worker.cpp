@@ -22,6 +22,18 @@ void yield_to_the_window() {
 
 }  // namespace
 
+Worker::State::State()
+    : progress({}, [this](std::string_view entered) {
+        const std::lock_guard lock(phase_mutex);
+        phase = entered;
+      }) {}
+
+std::string Worker::phase() const {
+  if (!last_) return {};
+  const std::lock_guard lock(last_->phase_mutex);
+  return last_->phase;
+}
+
 Worker::~Worker() {
   cancel();
   if (running_) running_->thread.join();

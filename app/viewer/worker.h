@@ -57,6 +57,8 @@ class Worker {
 
   const std::string& label() const { return label_; }
   double fraction() const { return last_ ? last_->progress.fraction() : 0.0; }
+  // The long phase the last job entered last (Progress::enter_phase), empty before any.
+  std::string phase() const;
   double seconds() const;
   // Called on the job's thread as each job ends (e.g. to wake a frame loop that sleeps); must be
   // thread-safe. Empty: nothing.
@@ -64,7 +66,10 @@ class Worker {
 
  private:
   struct State {
+    State();
     Progress progress;
+    mutable std::mutex phase_mutex;
+    std::string phase;
     std::atomic<bool> done{false};
     Finish finish;
     std::string error;

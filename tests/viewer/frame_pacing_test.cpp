@@ -62,7 +62,7 @@ TEST(StateReport, WritesTheStateWhenItChangesButNotForFramesAlone) {
   EXPECT_EQ(
       read(path),
       "frames 3\nkeys 2\ncloses 0\nidle 1\nbusy 0\nwaiting 0\nquestion save-changes\ndialog 0\n"
-      "title *bunny.obj - holefill viewer\nnotice Opened bunny.obj\n");
+      "title *bunny.obj - holefill viewer\nnotice Opened bunny.obj\nphase \n");
   state.frames = 9;
   report.update(state);
   EXPECT_NE(read(path).find("frames 3\n"), std::string::npos);  // unchanged otherwise

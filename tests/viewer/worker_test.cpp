@@ -35,6 +35,25 @@ TEST(Worker, TheFinishingStepRunsOnThePollingThread) {
   EXPECT_DOUBLE_EQ(worker.fraction(), 1.0);
 }
 
+TEST(Worker, TellsThePhaseTheJobIsIn) {
+  Worker worker;
+  EXPECT_EQ(worker.phase(), "");
+  std::atomic<bool> entered{false}, leave{false};
+  ASSERT_TRUE(worker.start("job", [&](Progress& progress) -> Worker::Finish {
+    progress.enter_phase(phase::kFactorising);
+    entered = true;
+    while (!leave) std::this_thread::yield();
+    return {};
+  }));
+  while (!entered) std::this_thread::yield();
+  EXPECT_EQ(worker.phase(), phase::kFactorising);
+  leave = true;
+  wait(worker);
+  ASSERT_TRUE(worker.start("next", [](Progress&) { return Worker::Finish{}; }));
+  EXPECT_EQ(worker.phase(), "");  // a new job starts in none
+  wait(worker);
+}
+
 TEST(Worker, CancelDropsTheResult) {
   Worker worker;
   bool finished = false;
