@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "holefill/errors.h"
-#include "holefill/io.h"
+#include "holefill/mesh_format.h"
 #include "outputs.h"
 #include "table.h"
 
@@ -30,18 +30,6 @@ struct BatchFile {
   std::string report;    // its JSON report; empty when none was written
 };
 
-std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
-bool readable(const fs::path& path) {
-  const auto& extensions = readable_extensions();
-  return std::find(extensions.begin(), extensions.end(), lower(path.extension().string())) !=
-         extensions.end();
-}
-
 // The meshes named, a folder's own files with a mesh extension in name order (not its subfolders).
 std::vector<std::string> batch_inputs(const std::vector<std::string>& named) {
   std::vector<std::string> inputs;
@@ -54,7 +42,7 @@ std::vector<std::string> batch_inputs(const std::vector<std::string>& named) {
     }
     std::vector<std::string> found;
     for (const auto& entry : fs::directory_iterator(name, error)) {
-      if (entry.is_regular_file(error) && readable(entry.path())) {
+      if (entry.is_regular_file(error) && format_from_path(entry.path())) {
         found.push_back(entry.path().string());
       }
     }

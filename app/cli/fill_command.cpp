@@ -57,16 +57,16 @@ FillCounts report_problems(const std::vector<HoleFill>& fills, const std::string
 }
 
 // Writes the mesh, then the report; says which one failed and what became of the other.
-bool write_results(const Mesh& mesh, const ReportInput& report, const FillArguments& a,
-                   const Streams& streams) {
+bool write_results(const Mesh& mesh, MeshFormat format, const ReportInput& report,
+                   const FillArguments& a, const Streams& streams) {
   try {
-    write_mesh_output(mesh, a, streams.out);
+    write_mesh_output(mesh, format, a, streams.out);
   } catch (const FileError& e) {
     streams.err << "holefill: " << e.what() << "; the filled mesh was not written"
                 << (a.report_path.empty() ? "" : ", nor the report") << "\n";
     return false;
   }
-  for (const auto& lost : mesh_output_losses(mesh, a)) {
+  for (const auto& lost : mesh_output_losses(mesh, format, a)) {
     streams.err << "holefill: " << a.output
                 << ": not written (the format cannot hold them): " << lost << "\n";
   }
@@ -94,8 +94,9 @@ void print_summary(const std::vector<HoleFill>& fills, const FillCounts& counts,
 }  // namespace
 
 int run_fill(FillArguments& a, const Streams& streams) {
+  std::optional<MeshFormat> format;
   try {
-    check_outputs(a);
+    format = check_outputs(a);
   } catch (const FileError& e) {
     streams.err << "holefill: " << e.what() << "\n";
     return kWriteFailed;
@@ -132,7 +133,7 @@ int run_fill(FillArguments& a, const Streams& streams) {
   report.fills = &fills;
 
   const FillCounts counts = report_problems(fills, a.input, streams.err);
-  const bool written = write_results(mesh, report, a, streams);
+  const bool written = write_results(mesh, *format, report, a, streams);
   if (streams.verbosity != Verbosity::Quiet) {
     print_summary(fills, counts, report, stdout_carries_a_file(a) ? streams.err : streams.out);
   }

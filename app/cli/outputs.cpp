@@ -1,9 +1,9 @@
 #include "outputs.h"
 
-#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <string_view>
 
@@ -18,18 +18,14 @@ std::filesystem::path mesh_output_name(const FillArguments& a) {
   return std::filesystem::path(a.output == "-" ? "<stdout>." + a.format : a.output);
 }
 
-void check_format(const FillArguments& a) {
+MeshFormat output_format(const FillArguments& a) {
   if (a.output == "-" && a.format.empty()) {
     throw UsageError("writing the mesh to standard output (-o -) needs --format");
   }
-  std::string ext = mesh_output_name(a).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  const auto& writable = writable_extensions();
-  if (std::find(writable.begin(), writable.end(), ext) == writable.end()) {
-    throw UsageError("-o " + a.output + ": cannot write '" + ext +
-                     "' files (use .obj, .off, .ply or .stl)");
-  }
+  const std::filesystem::path name = mesh_output_name(a);
+  if (const std::optional<MeshFormat> format = format_from_path(name)) return *format;
+  throw UsageError("-o " + a.output + ": cannot write '" + lowercase_extension(name) +
+                   "' files (use .obj, .off, .ply or .stl)");
 }
 
 // The mesh output must not be the input: the original would be lost (by any name: a link, a hard
@@ -62,12 +58,13 @@ std::string last_system_error() {
   return errno ? std::string(" (") + std::strerror(errno) + ")" : std::string();
 }
 
-void check_outputs(const FillArguments& a) {
-  check_format(a);
+MeshFormat check_outputs(const FillArguments& a) {
+  const MeshFormat format = output_format(a);
   check_mesh_output_path(a);
   check_report_path(a);
   if (a.output != "-") check_output_file(a.output);
   if (!a.report_path.empty() && a.report_path != "-") check_output_file(a.report_path);
+  return format;
 }
 
 namespace {
@@ -93,15 +90,17 @@ void write_output(const std::string& path, const std::string& bytes, std::ostrea
 }
 
 // To standard output the mesh goes a piece at a time as it is made, never whole in memory.
-void write_mesh_output(const Mesh& mesh, const FillArguments& a, std::ostream& out) {
-  if (a.output != "-") return save_mesh(mesh, a.output);
-  write_mesh_pieces(mesh, mesh_output_name(a),
+void write_mesh_output(const Mesh& mesh, MeshFormat format, const FillArguments& a,
+                       std::ostream& out) {
+  if (a.output != "-") return save_mesh(mesh, a.output, format);
+  write_mesh_pieces(mesh, format, mesh_output_name(a),
                     [&out](std::string_view piece) { write_to_stream(piece, out); });
   flush_stream(out);
 }
 
-std::vector<std::string> mesh_output_losses(const Mesh& mesh, const FillArguments& a) {
-  return attributes_not_written(mesh, mesh_output_name(a));
+std::vector<std::string> mesh_output_losses(const Mesh& mesh, MeshFormat format,
+                                            const FillArguments& a) {
+  return attributes_not_written(mesh, format, mesh_output_name(a));
 }
 
 bool stdout_carries_a_file(const FillArguments& a) {

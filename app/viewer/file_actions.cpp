@@ -1,17 +1,20 @@
 #include "file_actions.h"
 
 #include <algorithm>
+#include <optional>
+#include <string>
 #include <system_error>
 #include <utility>
 
-#include "holefill/io.h"
+#include "holefill/mesh_format.h"
 
 namespace holefill::viewer {
 namespace {
 
-bool writable(const std::string& extension) {
-  const auto& formats = writable_extensions();
-  return std::find(formats.begin(), formats.end(), extension) != formats.end();
+// The extension a saved file gets when none was typed: the opened file's format's, else OBJ's.
+std::string save_extension(const std::filesystem::path& opened) {
+  const std::optional<MeshFormat> format = format_from_path(opened);
+  return std::string(extension_of(format.value_or(MeshFormat::Obj)));
 }
 
 }  // namespace
@@ -93,10 +96,7 @@ void FileActions::dialog_closed(const std::optional<std::filesystem::path>& chos
     return;
   }
   std::filesystem::path path = *chosen;
-  if (path.extension().empty()) {
-    const std::string opened_extension = lower_extension(opened_);
-    path += writable(opened_extension) ? opened_extension : ".obj";
-  }
+  if (path.extension().empty()) path += save_extension(opened_);
   std::error_code error;
   if (!overwrite_confirmed && std::filesystem::exists(path, error)) {
     question_ = Question::Overwrite;
@@ -135,9 +135,8 @@ bool FileActions::take_mesh_opened() {
 
 std::filesystem::path FileActions::suggested_save_path() const {
   if (save_target_) return *save_target_;
-  const std::string extension = lower_extension(opened_);
   const std::string stem = opened_.empty() ? "mesh" : opened_.stem().string();
-  return opened_.parent_path() / (stem + "-filled" + (writable(extension) ? extension : ".obj"));
+  return opened_.parent_path() / (stem + "-filled" + save_extension(opened_));
 }
 
 std::string FileActions::file_name() const {

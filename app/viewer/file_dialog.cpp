@@ -131,13 +131,6 @@ std::optional<NativeDialogResult> NativeDialog::poll() {
   return result_.get();
 }
 
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 std::vector<FolderEntry> list_folder(const std::filesystem::path& folder,
                                      const std::vector<std::string>& extensions) {
   std::vector<FolderEntry> entries;
@@ -149,7 +142,7 @@ std::vector<FolderEntry> list_folder(const std::filesystem::path& folder,
     std::error_code ignored;
     if (it->is_directory(ignored)) {
       entries.push_back({name, true});
-    } else if (std::find(extensions.begin(), extensions.end(), lower_extension(it->path())) !=
+    } else if (std::find(extensions.begin(), extensions.end(), lowercase_extension(it->path())) !=
                extensions.end()) {
       entries.push_back({name, false});
     }

@@ -59,12 +59,10 @@ struct FolderEntry {
 };
 
 // The sub-folders and the files with one of `extensions` (lower case,
-// with the dot; compared case-insensitively) in `folder`, folders first, each group sorted by
-// name; hidden entries are left out. An unreadable folder gives an empty list.
+// with the dot; compared case-insensitively: holefill::lowercase_extension) in `folder`, folders
+// first, each group sorted by name; hidden entries are left out. An unreadable folder gives an
+// empty list.
 std::vector<FolderEntry> list_folder(const std::filesystem::path& folder,
                                      const std::vector<std::string>& extensions);
-
-// The lower-case extension of `path` with its dot ("" when none).
-std::string lower_extension(const std::filesystem::path& path);
 
 }  // namespace holefill::viewer

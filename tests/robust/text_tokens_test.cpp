@@ -254,10 +254,10 @@ TEST(FormatSniff, ReadsOnlyTheStartOfAText) {
   ASSERT_NE(pages, MAP_FAILED);
   char* bytes = static_cast<char*>(pages);
   ASSERT_EQ(mprotect(bytes + kReadable, kUnreadable, PROT_NONE), 0);
-  const std::pair<std::string, io::Format> starts[] = {
-      {"ply\nformat ascii 1.0\n", io::Format::Ply},
-      {"# made by hand\n\nOFF\n3 1 0\n", io::Format::Off},
-      {"mtllib a.mtl\nv 0 0 0\n", io::Format::Obj}};
+  const std::pair<std::string, MeshFormat> starts[] = {
+      {"ply\nformat ascii 1.0\n", MeshFormat::Ply},
+      {"# made by hand\n\nOFF\n3 1 0\n", MeshFormat::Off},
+      {"mtllib a.mtl\nv 0 0 0\n", MeshFormat::Obj}};
   for (const auto& [start, format] : starts) {
     std::memset(bytes, ' ', kReadable);
     std::memcpy(bytes, start.data(), start.size());
@@ -272,15 +272,15 @@ TEST(FormatSniff, ReadsOnlyTheStartOfAText) {
 TEST(FormatSniff, TheFirstKeywordLineDecidesAfterAnyNumberOfComments) {
   std::string comments;
   while (comments.size() < 100'000) comments += "# a comment line, then an empty one\n\n";
-  EXPECT_EQ(io::sniff(comments + "OFF\n3 1 0\n"), io::Format::Off);
-  EXPECT_EQ(io::sniff(comments + "ply\r\nformat ascii 1.0\n"), io::Format::Ply);
-  EXPECT_EQ(io::sniff(comments), io::Format::Unknown);
+  EXPECT_EQ(io::sniff(comments + "OFF\n3 1 0\n"), MeshFormat::Off);
+  EXPECT_EQ(io::sniff(comments + "ply\r\nformat ascii 1.0\n"), MeshFormat::Ply);
+  EXPECT_EQ(io::sniff(comments), std::nullopt);
   for (const std::size_t before : {std::size_t{65'534}, std::size_t{65'535}, std::size_t{65'536}}) {
     const std::string start = std::string(before - 1, '#') + "\n";
-    EXPECT_EQ(io::sniff(start + "   OFF  \n3 1 0\n"), io::Format::Off) << before;
-    EXPECT_EQ(io::sniff(start + "  ply \t\nformat ascii 1.0\n"), io::Format::Ply) << before;
+    EXPECT_EQ(io::sniff(start + "   OFF  \n3 1 0\n"), MeshFormat::Off) << before;
+    EXPECT_EQ(io::sniff(start + "  ply \t\nformat ascii 1.0\n"), MeshFormat::Ply) << before;
     // "ply" with more on its line is no PLY header line.
-    EXPECT_NE(io::sniff(start + "ply" + std::string(10, ' ') + "x\n"), io::Format::Ply) << before;
+    EXPECT_NE(io::sniff(start + "ply" + std::string(10, ' ') + "x\n"), MeshFormat::Ply) << before;
   }
 }
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "holefill/mesh.h"
+#include "holefill/mesh_format.h"
 #include "holefill/output_file.h"
 
 namespace holefill {
@@ -44,7 +45,8 @@ struct LoadReport {
 // (obj_attributes.h); what cannot be kept (other PLY elements and lists, OBJ's free-form
 // statements) is named in a warning. The format is chosen by the file's contents where they are
 // unmistakable (a PLY or OFF header, a binary STL's size) and by its extension otherwise; a file
-// whose extension says otherwise is read by its contents, with a warning.
+// whose extension says otherwise is read by its contents, with a warning. The format is decided
+// once, from the first 64 KiB of a bigger file (unless its first keyword line runs past them).
 Mesh load_mesh(const std::filesystem::path& path, LoadReport* report = nullptr);
 
 // Reads a mesh from bytes already in memory; `name` stands in for the path in errors and
@@ -52,20 +54,26 @@ Mesh load_mesh(const std::filesystem::path& path, LoadReport* report = nullptr);
 Mesh load_mesh_from_memory(const std::string& bytes, const std::filesystem::path& name,
                            LoadReport* report = nullptr);
 
-// Writes OBJ, OFF, PLY or binary STL (by extension): numbers as the shortest text that reads back
-// to the same value, PLY in the encoding and property types it was read with and with every
-// attribute the mesh carries (attributes.h), OFF with its colours and normals, OBJ with vertex
-// colours and what obj_attributes.h keeps (material libraries named relative to `path`'s folder);
-// through write_output_file (output_file.h): either the whole file appears at `path` or nothing
-// changes there, links are followed and permissions kept. Throws FileError saying why it could not
-// be written.
+// Writes OBJ, OFF, PLY or binary STL (by extension: format_from_path): numbers as the shortest text
+// that reads back to the same value, PLY in the encoding and property types it was read with and
+// with every attribute the mesh carries (attributes.h), OFF with its colours and normals, OBJ with
+// vertex colours and what obj_attributes.h keeps (material libraries named relative to `path`'s
+// folder); through write_output_file (output_file.h): either the whole file appears at `path` or
+// nothing changes there, links are followed and permissions kept. Throws FileError saying why it
+// could not be written (for an extension that names no format: before anything is written).
 void save_mesh(const Mesh& mesh, const std::filesystem::path& path);
+// The same in `format`, whatever `path`'s extension (for callers that decided it already).
+void save_mesh(const Mesh& mesh, const std::filesystem::path& path, MeshFormat format);
 
 // Hands `write` the bytes save_mesh writes for `mesh` in the format `name`'s extension says (.obj
 // .off .ply .stl), in order, in pieces of about a megabyte as they are made, for callers that
 // send them elsewhere (standard output): the file never exists whole in memory. Throws FileError
 // naming `name` for another extension, before any piece; what `write` throws passes through.
 void write_mesh_pieces(const Mesh& mesh, const std::filesystem::path& name,
+                       const ByteWriter& write);
+// The same in `format`; `name` stands in for the file in errors and names an OBJ's material
+// libraries relative to its folder.
+void write_mesh_pieces(const Mesh& mesh, MeshFormat format, const std::filesystem::path& name,
                        const ByteWriter& write);
 
 // The bytes write_mesh_pieces hands on, whole.
@@ -77,8 +85,11 @@ std::string mesh_to_bytes(const Mesh& mesh, const std::filesystem::path& name);
 // a space); empty when the file holds everything. For callers to warn.
 std::vector<std::string> attributes_not_written(const Mesh& mesh,
                                                 const std::filesystem::path& name);
+// The same for a file of `format` written at `name`.
+std::vector<std::string> attributes_not_written(const Mesh& mesh, MeshFormat format,
+                                                const std::filesystem::path& name);
 
-// The file extensions load_mesh and save_mesh accept, lower case with the dot.
+// The file extensions load_mesh and save_mesh accept, lower case with the dot (kMeshFormats').
 const std::vector<std::string>& readable_extensions();
 const std::vector<std::string>& writable_extensions();
 

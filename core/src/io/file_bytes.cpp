@@ -67,7 +67,8 @@ std::string read_file_bytes(const fs::path& path) {
 }
 
 FileStart read_file_start(const fs::path& path) {
-  constexpr std::uint64_t kFirstBytes = 1 << 16;
+  // 64 KiB, what telling the formats apart looks at, after a UTF-8 byte-order mark.
+  constexpr std::uint64_t kFirstBytes = (1 << 16) + 3;
   std::FILE* file = open_regular_file(path);
   FileStart start;
   std::error_code ec;

@@ -2,6 +2,7 @@
 // saving says what it leaves out instead of dropping it silently.
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <utility>
 
 #include "holefill/attributes.h"
@@ -17,6 +18,38 @@ bool is_colour(const std::string& name) {
 }
 
 bool is_normal(const std::string& name) { return name == "nx" || name == "ny" || name == "nz"; }
+
+// Whether a file of `format` holds the vertex attribute `name`.
+bool holds_vertex_attribute(std::optional<MeshFormat> format, const std::string& name) {
+  if (!format) return false;
+  switch (*format) {
+    case MeshFormat::Ply:
+      return true;
+    case MeshFormat::Off:
+      return is_colour(name) || is_normal(name);
+    case MeshFormat::Obj:
+      return is_colour(name) && name != "alpha";
+    case MeshFormat::Stl:
+      return false;
+  }
+  return false;
+}
+
+// Whether a file of `format` holds the mesh's face attributes; `only_colours` when they are all
+// colours.
+bool holds_face_attributes(std::optional<MeshFormat> format, bool only_colours) {
+  if (!format) return false;
+  switch (*format) {
+    case MeshFormat::Ply:
+      return true;
+    case MeshFormat::Off:
+      return only_colours;
+    case MeshFormat::Obj:
+    case MeshFormat::Stl:
+      return false;
+  }
+  return false;
+}
 
 std::string joined(const std::vector<std::string>& names) {
   std::string text;
@@ -63,34 +96,40 @@ std::string unnamed_material_libraries(const Mesh& mesh, const std::filesystem::
          "gap between two libraries)";
 }
 
-}  // namespace
-
-std::vector<std::string> attributes_not_written(const Mesh& mesh,
-                                                const std::filesystem::path& name) {
-  std::string ext = name.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+// What a file of `format` (none: an extension that names no format) leaves out.
+std::vector<std::string> not_written(const Mesh& mesh, std::optional<MeshFormat> format,
+                                     const std::filesystem::path& name) {
   const AttributeLayout layout = attribute_layout(mesh);
   const bool off_faces = std::all_of(layout.face.begin(), layout.face.end(),
                                      [](const ScalarAttribute& a) { return is_colour(a.name); });
   std::vector<std::string> vertex, face;
   for (const auto& a : layout.vertex) {
-    const bool held = ext == ".ply" ||
-                      (ext == ".off" && (is_colour(a.name) || is_normal(a.name))) ||
-                      (ext == ".obj" && is_colour(a.name) && a.name != "alpha");
-    if (!held) vertex.push_back(a.name);
+    if (!holds_vertex_attribute(format, a.name)) vertex.push_back(a.name);
   }
-  for (const auto& a : layout.face) {
-    if (!(ext == ".ply" || (ext == ".off" && off_faces))) face.push_back(a.name);
+  if (!holds_face_attributes(format, off_faces)) {
+    for (const auto& a : layout.face) face.push_back(a.name);
   }
   std::vector<std::string> lost;
   if (!vertex.empty()) lost.push_back("vertex properties " + joined(vertex));
   if (!face.empty()) lost.push_back("face properties " + joined(face));
-  const std::string obj_values = ext == ".obj" ? std::string() : obj_values_held(mesh);
+  const bool obj = format == MeshFormat::Obj;
+  const std::string obj_values = obj ? std::string() : obj_values_held(mesh);
   if (!obj_values.empty()) lost.push_back(obj_values + " (only OBJ holds them)");
-  const std::string libraries = ext == ".obj" ? unnamed_material_libraries(mesh, name) : "";
+  const std::string libraries = obj ? unnamed_material_libraries(mesh, name) : "";
   if (!libraries.empty()) lost.push_back(libraries);
   return lost;
+}
+
+}  // namespace
+
+std::vector<std::string> attributes_not_written(const Mesh& mesh,
+                                                const std::filesystem::path& name) {
+  return not_written(mesh, format_from_path(name), name);
+}
+
+std::vector<std::string> attributes_not_written(const Mesh& mesh, MeshFormat format,
+                                                const std::filesystem::path& name) {
+  return not_written(mesh, format, name);
 }
 
 }  // namespace holefill

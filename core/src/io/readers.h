@@ -5,15 +5,15 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string_view>
 
 #include "holefill/io.h"
+#include "holefill/mesh_format.h"
 #include "huge_pages.h"
 #include "soup.h"
 
 namespace holefill::io {
-
-enum class Format { Obj, Off, Ply, Stl, Unknown };
 
 // Reserves, on huge pages, room for `faces` faces a reader is about to read and their corners as
 // triangles (most files' faces), at most one corner per byte of the `bytes` that hold them.
@@ -22,14 +22,20 @@ inline void reserve_faces(Soup& soup, std::size_t faces, std::size_t bytes) {
   reserve_on_huge_pages(soup.face_end, faces);
 }
 
-// "obj", "off", "ply", "stl" or "unknown".
-const char* name_of(Format format);
+// What the first bytes of a file say it is: the format the contents clearly are (a PLY or OFF
+// header, a binary STL's size, ...), or none; `decided` false when more of the file could change
+// that (the first line with a keyword runs past the bytes given, or they hold less than the
+// 64 KiB looked at).
+struct Sniffed {
+  std::optional<MeshFormat> format;
+  bool decided = true;
+};
 
-// The format an extension (lower case, with the dot) names, or Unknown.
-Format format_of_extension(const std::string& ext);
+// `first_bytes` are the start of a file of `file_size` bytes.
+Sniffed sniff_start(std::string_view first_bytes, std::uint64_t file_size);
 
-// The format the contents clearly are (a PLY or OFF header, a binary STL's size, ...), or Unknown.
-Format sniff(std::string_view bytes);
+// The format the contents clearly are, or none: sniff_start on the whole of them.
+std::optional<MeshFormat> sniff(std::string_view bytes);
 
 // OBJ through tinyobjloader (obj_reader.cpp says who reads what): positions and colours, faces
 // (polygons of any size; relative indices) with their texture coordinates, normals, materials,

@@ -211,17 +211,22 @@ void write_stl(const Mesh& mesh, PieceOut& out) {
 
 }  // namespace
 
-void write_mesh_file(const Mesh& mesh, const std::string& ext, const std::filesystem::path& output,
+void write_mesh_file(const Mesh& mesh, MeshFormat format, const std::filesystem::path& output,
                      const ByteWriter& write) {
   PieceOut out(write);
-  if (ext == ".obj") {
-    write_obj(mesh, output, out);
-  } else if (ext == ".off") {
-    write_off(mesh, out);
-  } else if (ext == ".stl") {
-    write_stl(mesh, out);
-  } else {
-    write_ply(mesh, out);
+  switch (format) {
+    case MeshFormat::Obj:
+      write_obj(mesh, output, out);
+      break;
+    case MeshFormat::Off:
+      write_off(mesh, out);
+      break;
+    case MeshFormat::Ply:
+      write_ply(mesh, out);
+      break;
+    case MeshFormat::Stl:
+      write_stl(mesh, out);
+      break;
   }
   out.flush();
 }

@@ -9,15 +9,15 @@
 #include <string>
 
 #include "holefill/mesh.h"
+#include "holefill/mesh_format.h"
 #include "holefill/output_file.h"
 
 namespace holefill::io {
 
-// Hands `write` the file for `mesh` in the format `ext` names (".obj", ".off", ".stl"; anything
-// else is written as PLY), to be written at `output` (an OBJ names its material libraries
-// relative to its folder), in pieces of about a megabyte. Faces index
-// live vertices only: the mesh must hold no deleted elements.
-void write_mesh_file(const Mesh& mesh, const std::string& ext, const std::filesystem::path& output,
+// Hands `write` the file for `mesh` in `format`, to be written at `output` (an OBJ names its
+// material libraries relative to its folder), in pieces of about a megabyte. Faces index live
+// vertices only: the mesh must hold no deleted elements.
+void write_mesh_file(const Mesh& mesh, MeshFormat format, const std::filesystem::path& output,
                      const ByteWriter& write);
 
 // How an OBJ written at `output` names the material library `library`: relative to the output's
