@@ -217,6 +217,7 @@ std::string solve(Mesh& mesh, const Region& region, const FairOptions& options,
   solver.analyzePattern(on_unknowns);
   if (is_cancelled(progress)) return kCancelledReason;
   if (!solver.factorize_unless_cancelled(on_unknowns, progress)) return kCancelledReason;
+  enter_phase(progress, phase::kSmoothing);  // the solve and the rest of the stage
   if (solver.info() != Eigen::Success) {
     return "the fairing system could not be factorised (singular or not positive)";
   }

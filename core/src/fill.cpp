@@ -70,6 +70,7 @@ void smooth(Mesh& mesh, HoleFill& fill, const SmoothOptions& options, double fea
 // clean (do no harm), by the independent exact check too.
 std::size_t intersections_of(const Mesh& mesh, const Patch& patch,
                              const detail::MeshFaceIndex* index, const FillOptions& options) {
+  enter_phase(progress_of(options), phase::kChecking);
   return detail::patch_intersections(mesh, patch, index, !options.allow_intersections,
                                      progress_of(options))
       .size();
@@ -94,6 +95,7 @@ std::string stage_problem(const Mesh& mesh, const HoleFill& fill,
 // adds it. False, with fill.failure saying why, when no triangulation could be added.
 bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options,
                        const PlannedTriangulation* plan, const detail::MeshFaceIndex* index) {
+  enter_phase(progress_of(options), phase::kTriangulating);
   PlannedTriangulation planned;
   fill.times.triangulate_seconds +=
       timed([&] { planned = plan ? *plan : plan_triangulation(mesh, hole, options.triangulate); });
@@ -126,6 +128,7 @@ bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillO
 // cancel stopped it: undone too, the fill failed with the reason.
 bool refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
                   const detail::MeshFaceIndex* index) {
+  enter_phase(progress_of(options), phase::kRefining);
   const detail::StageUndo undo(mesh, fill.patch);
   std::size_t intersections = 0;
   fill.times.refine_seconds = 0.0;
@@ -181,6 +184,7 @@ bool refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
 // False when a cancel stopped it: undone too, the fill failed with the reason.
 bool smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
                   const detail::MeshFaceIndex* index) {
+  enter_phase(progress_of(options), phase::kSmoothing);
   std::vector<Point> positions;
   for (const auto v : fill.patch.new_vertices) positions.push_back(mesh.point(v));
   std::string problem;

@@ -46,12 +46,17 @@ class Progress {
 };
 
 // The long phases that say so (Progress::enter_phase), each of which looks at the cancel within
-// a few hundred milliseconds.
+// a few hundred milliseconds. A phase lasts until the next is entered; a fill's stages enter
+// theirs as they start.
 namespace phase {
 inline constexpr std::string_view kReading = "reading";               // load_mesh's parse
 inline constexpr std::string_view kIndexingFaces = "indexing faces";  // before a fill's checks
+inline constexpr std::string_view kTriangulating = "triangulating";
+inline constexpr std::string_view kRefining = "refining";
 inline constexpr std::string_view kRefiningBetweenCreases = "refining between creases";
+inline constexpr std::string_view kSmoothing = "smoothing";
 inline constexpr std::string_view kFactorising = "factorising";  // fairing's system
+inline constexpr std::string_view kChecking = "checking intersections";
 }  // namespace phase
 
 // The reason a stage stopped by a cancel gives (HoleFill::failure, FairResult::problem).
