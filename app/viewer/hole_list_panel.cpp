@@ -133,11 +133,16 @@ void hole_table(Session& session, UiState& ui, const std::vector<HoleRow>& rows)
   ImGui::TableSetupColumn(
       "edges", ImGuiTableColumnFlags_PreferSortDescending | ImGuiTableColumnFlags_WidthFixed,
       scaled(48.0f), static_cast<ImGuiID>(HoleColumn::Edges));
-  ImGui::TableSetupColumn("perimeter", ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
-                          static_cast<ImGuiID>(HoleColumn::Perimeter));
-  ImGui::TableSetupColumn("area", ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
-                          static_cast<ImGuiID>(HoleColumn::Area));
-  ImGui::TableSetupColumn("stage", 0, 0.0f, static_cast<ImGuiID>(HoleColumn::Status));
+  // The stage column takes the most of the width the numbers leave: "triangulated" reached the
+  // table's edge when a scroll bar took its share (and the perimeter's header needs its own).
+  ImGui::TableSetupColumn(
+      "perimeter", ImGuiTableColumnFlags_PreferSortDescending | ImGuiTableColumnFlags_WidthStretch,
+      1.4f, static_cast<ImGuiID>(HoleColumn::Perimeter));
+  ImGui::TableSetupColumn(
+      "area", ImGuiTableColumnFlags_PreferSortDescending | ImGuiTableColumnFlags_WidthStretch,
+      0.85f, static_cast<ImGuiID>(HoleColumn::Area));
+  ImGui::TableSetupColumn("stage", ImGuiTableColumnFlags_WidthStretch, 1.5f,
+                          static_cast<ImGuiID>(HoleColumn::Status));
   ImGui::TableHeadersRow();
   take_sort_order(ui.holes);
   for (const auto& hole : rows) hole_row(session, hole, follow && hole.id == session.selected());

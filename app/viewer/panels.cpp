@@ -43,6 +43,10 @@ void histogram(const char* id, const std::map<int, std::size_t>& valences, float
   const bool hovered = ImGui::IsItemHovered();
   const float base = origin.y + height;
   const float slot = width / static_cast<float>(bins.size());
+  std::array<float, kValenceBins> label_widths{};
+  for (std::size_t i = 0; i < bins.size(); ++i)
+    label_widths[i] = ImGui::CalcTextSize(bins[i].label).x;
+  const auto label_x = label_positions(label_widths, width, scaled(4.0f));
   draw->AddRectFilled(origin, ImVec2(origin.x + width, base), ImGui::GetColorU32(ImGuiCol_FrameBg));
   for (std::size_t i = 0; i < bins.size(); ++i) {
     const float left = origin.x + slot * static_cast<float>(i);
@@ -56,12 +60,10 @@ void histogram(const char* id, const std::map<int, std::size_t>& valences, float
           ImVec2(left + slot - scaled(2.0f), base),
           ImGui::GetColorU32(over ? ImGuiCol_PlotHistogramHovered : ImGuiCol_PlotHistogram));
     }
-    const float label_width = ImGui::CalcTextSize(bins[i].label).x;
-    // In a narrow chart (the comparison's halves) every other label, so they never touch.
-    const bool crowded = label_width + scaled(4.0f) > slot;
-    if (!crowded || i % 2 == 0)
-      draw->AddText(ImVec2(left + 0.5f * (slot - label_width), base),
-                    ImGui::GetColorU32(ImGuiCol_TextDisabled), bins[i].label);
+    if (label_x[i]) {
+      draw->AddText(ImVec2(origin.x + *label_x[i], base), ImGui::GetColorU32(ImGuiCol_TextDisabled),
+                    bins[i].label);
+    }
     if (over) {
       ImGui::SetTooltip("valence %s: %zu vertices (%.1f %%)", bins[i].label, bins[i].count,
                         100.0 * static_cast<double>(bins[i].count) / static_cast<double>(total));

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace holefill::viewer {
@@ -23,5 +24,12 @@ std::array<ValenceBin, kValenceBins> valence_bins(const std::map<int, std::size_
 // A bar's height as a share of the chart (0 to 1) for `count` when the tallest is `most`; with
 // `log`, heights follow log(1 + count) so that small bins of a big mesh stay visible.
 double bar_height(std::size_t count, std::size_t most, bool log);
+
+// Where each bin's label goes under a chart `width` wide (x from its left edge), given the
+// labels' widths: centred under its bar but within the chart. Where they would come closer
+// than `gap` (the comparison's half-width charts), every other label, else every fourth, else
+// the two ends. Nothing for a label left out.
+std::array<std::optional<float>, kValenceBins> label_positions(
+    const std::array<float, kValenceBins>& widths, float width, float gap);
 
 }  // namespace holefill::viewer

@@ -83,6 +83,29 @@ TEST(ValenceBins, OutliersFallInTheEndBinsAndEveryVertexCounts) {
   EXPECT_EQ(total, 66u);
 }
 
+// The labels drawn under a chart lie within it and at least `gap` apart; a chart wide enough
+// shows them all, a half-width one (the comparison's, 175 px at 7 px a character) every other,
+// a narrower one every fourth.
+TEST(ValenceBins, LabelsStayInsideTheChartAndNeverTouch) {
+  const std::array<float, kValenceBins> widths{21, 7, 7, 7, 7, 7, 7, 7, 28};  // "<=2" .. ">=10"
+  const float gap = 4.0f;
+  for (const float width : {360.0f, 175.0f, 120.0f}) {
+    const auto x = label_positions(widths, width, gap);
+    float previous_end = -gap;
+    std::size_t shown = 0;
+    for (std::size_t i = 0; i < kValenceBins; ++i) {
+      if (!x[i]) continue;
+      ++shown;
+      EXPECT_GE(*x[i], 0.0f) << width;
+      EXPECT_LE(*x[i] + widths[i], width) << width;
+      EXPECT_GE(*x[i], previous_end + gap) << "label " << i << " in a chart " << width << " wide";
+      previous_end = *x[i] + widths[i];
+    }
+    EXPECT_TRUE(x[0] && x[kValenceBins - 1]) << width;  // the ends always say where they are
+    EXPECT_EQ(shown, width > 300.0f ? kValenceBins : width > 150.0f ? 5u : 3u) << width;
+  }
+}
+
 TEST(ValenceBins, LogHeightsKeepSmallBinsVisible) {
   EXPECT_DOUBLE_EQ(bar_height(50, 100, false), 0.5);
   EXPECT_DOUBLE_EQ(bar_height(100, 100, true), 1.0);
