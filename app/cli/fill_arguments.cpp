@@ -121,8 +121,9 @@ void add_selection_options(CLI::App& command, FillArguments& a) {
       ->check(CLI::IsMember(names(kStages)));
   command
       .add_option("--threads", a.options.threads,
-                  "threads that plan holes at once (0: every core this process\n"
-                  "may run on); the output is the same whatever the number")
+                  "threads that read, prepare and fill the mesh (0: every core\n"
+                  "this process may run on); the output is the same whatever\n"
+                  "the number")
       ->transform(whole_number(0, 4096));
   command.add_flag("--allow-intersections", a.options.allow_intersections,
                    "keep a hole's best patch even when it intersects the mesh\n"
@@ -208,6 +209,7 @@ void finish_fill_options(FillArguments& a) {
   a.options.refine.remesh = a.remesh == "on";
   a.options.islands.detect = a.islands == "on";
   a.preparation.islands = a.options.islands;
+  a.preparation.threads = a.options.threads;
   a.options.smooth.method = value_of(kSmoothMethods, a.smooth);
   a.options.smooth.fair.cotangent_weights = a.fair_weights == "cotangent";
   a.options.last_stage = value_of(kStages, a.stage);

@@ -101,7 +101,7 @@ int run_fill(FillArguments& a, const Streams& streams) {
     streams.err << "holefill: " << e.what() << "\n";
     return kWriteFailed;
   }
-  Mesh mesh = load_and_warn(a.input, a.format, streams);
+  Mesh mesh = load_and_warn(a.input, a.format, streams, a.options.threads);
   const PreparedMesh prepared = prepare_mesh(mesh, a.preparation, a.input, streams.err);
   const auto& holes = prepared.holes;
   select_holes(a, holes);

@@ -116,14 +116,14 @@ std::vector<Point> unhelpful_welds(Mesh& mesh, const std::vector<Point>& welded_
 // still passes twice through one position is taken back (the mesh welded again from a copy without
 // it), so that no pinch is left that no fill closes. Only meshes with touching vertices pay for the
 // copy.
-WeldReport weld_where_it_helps(Mesh& mesh, double tolerance) {
-  if (!has_touching_vertices(mesh, tolerance)) return {};
+WeldReport weld_where_it_helps(Mesh& mesh, double tolerance, unsigned threads) {
+  if (!has_touching_vertices(mesh, tolerance, threads)) return {};
   Mesh unwelded = mesh;
-  WeldReport report = weld_touching_vertices(mesh, tolerance);
+  WeldReport report = weld_touching_vertices(mesh, tolerance, {}, threads);
   const std::vector<Point> unhelpful = unhelpful_welds(mesh, report.welded_at);
   if (unhelpful.empty()) return report;
   mesh = std::move(unwelded);
-  report = weld_touching_vertices(mesh, tolerance, unhelpful);
+  report = weld_touching_vertices(mesh, tolerance, unhelpful, threads);
   report.positions_left += unhelpful.size();
   return report;
 }
@@ -173,9 +173,11 @@ PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options) {
   PreparedMesh prepared;
   if (options.stitch) {
     prepared.stitched = true;
-    prepared.stitch = stitch_borders(mesh, options.stitch_options);
+    StitchOptions stitching = options.stitch_options;
+    stitching.threads = options.threads;
+    prepared.stitch = stitch_borders(mesh, stitching);
     tell_stitching(prepared.stitch, prepared.messages);
-    prepared.weld = weld_where_it_helps(mesh, prepared.stitch.tolerance);
+    prepared.weld = weld_where_it_helps(mesh, prepared.stitch.tolerance, options.threads);
     tell_welding(prepared.weld, prepared.messages);
   }
   if (options.remove_pieces_up_to > 0) {

@@ -62,16 +62,16 @@ FlatLists flat_lists(std::size_t keys, const std::vector<std::pair<int, int>>& p
 // edge length (1e10 on a grid of face-by-face squares) listed every point for every point, 154 s
 // and 19 GB for 60,000 faces.
 FlatLists points_within(const detail::BoundaryIndex& index, double tolerance,
-                        std::vector<char>& crowded) {
+                        std::vector<char>& crowded, unsigned threads) {
   const BoundaryPoints& points = index.points;
   const std::size_t n = points.vertices.size();
   const std::size_t most = std::min(n, kMostPointsWithin + 1);
   crowded.assign(n, 0);
-  // The points in blocks on every core, each block's pairs in its points' order, the blocks then
-  // joined in order: the lists of one thread.
+  // The points in blocks on `threads` threads, each block's pairs in its points' order, the
+  // blocks then joined in order: the lists of one thread.
   constexpr std::size_t kBlock = std::size_t{1} << 13;
   std::vector<std::vector<std::pair<int, int>>> block_pairs((n + kBlock - 1) / kBlock);
-  detail::for_each_index(block_pairs.size(), detail::available_cores(), [&](std::size_t block) {
+  detail::for_each_index(block_pairs.size(), threads, [&](std::size_t block) {
     std::vector<std::size_t> nearest(most);
     std::vector<double> squared(most);
     std::vector<int> within;
@@ -119,7 +119,7 @@ struct Matches {
 constexpr std::size_t kScanLimit = 16;
 
 Matches matching_boundary_edges(const Mesh& mesh, const detail::BoundaryIndex& index,
-                                double tolerance) {
+                                double tolerance, unsigned threads) {
   const BoundaryPoints& points = index.points;
   std::vector<int> slot(mesh.n_vertices(), -1);
   for (std::size_t s = 0; s < points.vertices.size(); ++s) {
@@ -147,7 +147,7 @@ Matches matching_boundary_edges(const Mesh& mesh, const detail::BoundaryIndex& i
   const FlatLists out_of = flat_lists(points.vertices.size(), leaving);
   std::sort(by_ends.begin(), by_ends.end());
   std::vector<char> crowded;
-  const FlatLists near = points_within(index, tolerance, crowded);
+  const FlatLists near = points_within(index, tolerance, crowded, threads);
 
   std::vector<int> match_of(boundary.size(), -1);  // per boundary halfedge
   std::vector<char> near_p(points.vertices.size(), 0);
@@ -282,7 +282,7 @@ StitchReport stitch_matching_edges(Mesh& mesh, const Matches& matches, double to
 // vertex was merged into its junction's vertex, the copy replaces the mesh and the report is
 // returned; otherwise the mesh is left as it was and the junctions whose vertices were left
 // over are removed from the list.
-std::optional<StitchReport> stitch_with_junctions(Mesh& mesh, double tolerance,
+std::optional<StitchReport> stitch_with_junctions(Mesh& mesh, double tolerance, unsigned threads,
                                                   std::vector<detail::TJunction>& junctions) {
   Mesh trial = mesh;
   OpenMesh::VPropHandleT<int> junction_of;  // 1 + the junction a new vertex stands for
@@ -292,7 +292,8 @@ std::optional<StitchReport> stitch_with_junctions(Mesh& mesh, double tolerance,
     trial.property(junction_of, added[j]) = static_cast<int>(j) + 1;
   }
   StitchReport report = stitch_matching_edges(
-      trial, matching_boundary_edges(trial, detail::BoundaryIndex(trial), tolerance), tolerance);
+      trial, matching_boundary_edges(trial, detail::BoundaryIndex(trial), tolerance, threads),
+      tolerance);
   std::vector<char> left_over(junctions.size(), 0);
   bool any_left_over = false;
   for (const auto v : trial.vertices()) {
@@ -316,7 +317,8 @@ std::optional<StitchReport> stitch_with_junctions(Mesh& mesh, double tolerance,
 StitchReport stitch_borders(Mesh& mesh, const StitchOptions& options) {
   const double tolerance = options.tolerance >= 0.0 ? options.tolerance : default_tolerance(mesh);
   const detail::BoundaryIndex index(mesh);
-  const Matches matches = matching_boundary_edges(mesh, index, tolerance);
+  const unsigned threads = options.threads ? options.threads : detail::available_cores();
+  const Matches matches = matching_boundary_edges(mesh, index, tolerance, threads);
   // An edge that already has a partner end to end is stitched to it, not split.
   std::vector<detail::TJunction> junctions =
       detail::find_t_junctions(mesh, index, tolerance, matches.on_another);
@@ -325,7 +327,7 @@ StitchReport stitch_borders(Mesh& mesh, const StitchOptions& options) {
   // each copies the mesh.
   constexpr int kMaxTries = 3;
   for (int attempt = 0; attempt < kMaxTries && !junctions.empty(); ++attempt) {
-    if (auto report = stitch_with_junctions(mesh, tolerance, junctions)) return *report;
+    if (auto report = stitch_with_junctions(mesh, tolerance, threads, junctions)) return *report;
   }
   return stitch_matching_edges(mesh, matches, tolerance);
 }

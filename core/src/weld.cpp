@@ -56,38 +56,40 @@ bool weld_is_clean(const Mesh& mesh, const std::vector<VertexHandle>& group,
 
 // Groups of boundary vertices within the tolerance of each other, on one piece, no two joined by
 // an edge; each group lowest index first, groups in the order of their lowest vertex.
-std::vector<std::vector<VertexHandle>> touching_groups(const Mesh& mesh, double tolerance) {
+std::vector<std::vector<VertexHandle>> touching_groups(const Mesh& mesh, double tolerance,
+                                                       unsigned threads) {
   const detail::BoundaryIndex index(mesh);
   const detail::BoundaryPoints& points = index.points;
   if (points.vertices.size() < 2) return {};
-  // The pairs within the tolerance, found in blocks of points on every core and taken in the
-  // points' order, so that the groups are those of one thread.
+  // The pairs within the tolerance, found in blocks of points on `threads` threads (0: every
+  // core) and taken in the points' order, so that the groups are those of one thread.
   const std::size_t most = std::min(points.vertices.size(), kMostAtOnePosition + 1);
   constexpr std::size_t kBlock = std::size_t{1} << 13;
   const std::size_t n = points.vertices.size();
   std::vector<std::vector<std::pair<VertexHandle, VertexHandle>>> block_pairs((n + kBlock - 1) /
                                                                               kBlock);
-  detail::for_each_index(block_pairs.size(), detail::available_cores(), [&](std::size_t block) {
-    std::vector<std::size_t> nearest(most);
-    std::vector<double> squared(most);
-    for (std::size_t s = block * kBlock; s < std::min(n, (block + 1) * kBlock); ++s) {
-      const VertexHandle a = points.vertices[s];
-      const std::size_t found =
-          index.tree.knnSearch(mesh.point(a).data(), most, nearest.data(), squared.data());
-      const auto within = [&](std::size_t k) {
-        return (mesh.point(points.vertices[nearest[k]]) - mesh.point(a)).norm() <= tolerance;
-      };
-      // Crowded: more than a few points within the tolerance (a tolerance far above the edge
-      // length) is no place where holes touch; it is left apart.
-      if (found > kMostAtOnePosition && within(kMostAtOnePosition)) continue;
-      for (std::size_t k = 0; k < found; ++k) {
-        if (!within(k)) continue;
-        const VertexHandle b = points.vertices[nearest[k]];
-        if (b.idx() <= a.idx() || mesh.find_halfedge(a, b).is_valid()) continue;
-        block_pairs[block].emplace_back(a, b);
-      }
-    }
-  });
+  detail::for_each_index(
+      block_pairs.size(), threads ? threads : detail::available_cores(), [&](std::size_t block) {
+        std::vector<std::size_t> nearest(most);
+        std::vector<double> squared(most);
+        for (std::size_t s = block * kBlock; s < std::min(n, (block + 1) * kBlock); ++s) {
+          const VertexHandle a = points.vertices[s];
+          const std::size_t found =
+              index.tree.knnSearch(mesh.point(a).data(), most, nearest.data(), squared.data());
+          const auto within = [&](std::size_t k) {
+            return (mesh.point(points.vertices[nearest[k]]) - mesh.point(a)).norm() <= tolerance;
+          };
+          // Crowded: more than a few points within the tolerance (a tolerance far above the edge
+          // length) is no place where holes touch; it is left apart.
+          if (found > kMostAtOnePosition && within(kMostAtOnePosition)) continue;
+          for (std::size_t k = 0; k < found; ++k) {
+            if (!within(k)) continue;
+            const VertexHandle b = points.vertices[nearest[k]];
+            if (b.idx() <= a.idx() || mesh.find_halfedge(a, b).is_valid()) continue;
+            block_pairs[block].emplace_back(a, b);
+          }
+        }
+      });
   // The pieces only for the pairs that need them: most meshes have none, and finding the pieces
   // of a 1.4M-face mesh was a tenth of filling it.
   std::optional<MeshPieces> pieces;
@@ -174,13 +176,14 @@ std::size_t unweld_open_pinches(Mesh& mesh, const std::vector<Point>& welded_at)
   return 0;
 }
 
-bool has_touching_vertices(const Mesh& mesh, double tolerance) {
-  return !touching_groups(mesh, tolerance).empty();
+bool has_touching_vertices(const Mesh& mesh, double tolerance, unsigned threads) {
+  return !touching_groups(mesh, tolerance, threads).empty();
 }
 
-WeldReport weld_touching_vertices(Mesh& mesh, double tolerance, const std::vector<Point>& apart) {
+WeldReport weld_touching_vertices(Mesh& mesh, double tolerance, const std::vector<Point>& apart,
+                                  unsigned threads) {
   WeldReport report;
-  auto groups = touching_groups(mesh, tolerance);
+  auto groups = touching_groups(mesh, tolerance, threads);
   std::erase_if(groups, [&](const std::vector<VertexHandle>& group) {
     return std::any_of(group.begin(), group.end(), [&](VertexHandle v) {
       return std::find(apart.begin(), apart.end(), mesh.point(v)) != apart.end();

@@ -94,6 +94,7 @@ def fill(
     remove_small_components: int = 0,
     keep_borders: bool = False,
     allow_intersections: bool = False,
+    threads: int = 0,
 ) -> list[Record]: ...
 
 class Fill:
@@ -120,6 +121,7 @@ class Fill:
         remove_small_components: int = 0,
         keep_borders: bool = False,
         allow_intersections: bool = False,
+        threads: int = 0,
     ) -> None: ...
     def triangulate(self) -> Record: ...
     def refine(self) -> Record: ...

@@ -47,6 +47,7 @@ const std::vector<OptionName> kOptionNames{
     {"remove_small_components", "--remove-small-components", Kind::Value, "int"},
     {"keep_borders", "--keep-borders", Kind::Flag, "bool"},
     {"allow_intersections", "--allow-intersections", Kind::Flag, "bool"},
+    {"threads", "--threads", Kind::Value, "int"},
 };
 
 const OptionName* find_python(const std::string& name) {
@@ -161,6 +162,7 @@ py::dict option_defaults() {
   defaults["remove_small_components"] = a.preparation.remove_pieces_up_to;
   defaults["keep_borders"] = a.preparation.keep_borders;
   defaults["allow_intersections"] = o.allow_intersections;
+  defaults["threads"] = o.threads;
   return defaults;
 }
 

@@ -46,13 +46,16 @@ struct LoadReport {
 // statements) is named in a warning. The format is chosen by the file's contents where they are
 // unmistakable (a PLY or OFF header, a binary STL's size) and by its extension otherwise; a file
 // whose extension says otherwise is read by its contents, with a warning. The format is decided
-// once, from the first 64 KiB of a bigger file (unless its first keyword line runs past them).
-Mesh load_mesh(const std::filesystem::path& path, LoadReport* report = nullptr);
+// once, from the first 64 KiB of a bigger file (unless its first keyword line runs past them). A
+// big mesh is read and assembled on up to `threads` threads (0: every core this process may run
+// on); the mesh, the report and every message are the same whatever the number.
+Mesh load_mesh(const std::filesystem::path& path, LoadReport* report = nullptr,
+               unsigned threads = 0);
 
 // Reads a mesh from bytes already in memory; `name` stands in for the path in errors and
 // chooses the format like a file name's extension. load_mesh is this on the file's contents.
 Mesh load_mesh_from_memory(const std::string& bytes, const std::filesystem::path& name,
-                           LoadReport* report = nullptr);
+                           LoadReport* report = nullptr, unsigned threads = 0);
 
 // Writes OBJ, OFF, PLY or binary STL (by extension: format_from_path): numbers as the shortest text
 // that reads back to the same value, PLY in the encoding and property types it was read with and

@@ -28,6 +28,10 @@ struct PrepareOptions {
   // being filled is filled with it, so it is neither kept open as a border nor called a flat
   // piece's rim.
   IslandOptions islands;
+  // Threads every step may use (stitching's and welding's searches: stitch_options.threads is
+  // replaced by this). 0: every core this process may run on. The result is the same whatever
+  // the number.
+  unsigned threads = 0;
   bool operator==(const PrepareOptions&) const = default;
 };
 

@@ -28,6 +28,9 @@ struct StitchOptions {
   // Boundary vertices at most this far apart may be merged. Negative: the default,
   // kDefaultStitchRelativeTolerance times the bounding box diagonal. 0: exact coincidence only.
   double tolerance = -1.0;
+  // Threads the search for each boundary point's neighbours runs on. 0: every core this process
+  // may run on (its affinity mask). The result is the same whatever the number.
+  unsigned threads = 0;
 };
 
 struct StitchReport {

@@ -27,9 +27,11 @@ struct WeldReport {
 // lowest index is kept, with its position and properties, and the faces of the others are put on
 // it with their properties; face indices are kept, vertex indices as stitch_borders keeps them.
 // Groups with a vertex at exactly one of `apart`'s positions are left apart (and not counted).
-// Expects a mesh without deleted elements; a mesh with nothing to weld is left untouched.
+// Expects a mesh without deleted elements; a mesh with nothing to weld is left untouched. The
+// search for vertices within the tolerance runs on `threads` threads (0: every core this process
+// may run on); the result is the same whatever the number.
 WeldReport weld_touching_vertices(Mesh& mesh, double tolerance,
-                                  const std::vector<Point>& apart = {});
+                                  const std::vector<Point>& apart = {}, unsigned threads = 0);
 
 // Takes back the welds whose holes stayed open: each vertex at one of `welded_at`'s positions
 // (WeldReport::welded_at) that is still a pinch, its faces in several fans with gaps between them,
@@ -39,7 +41,8 @@ WeldReport weld_touching_vertices(Mesh& mesh, double tolerance,
 // untouched). Expects a mesh without deleted elements.
 std::size_t unweld_open_pinches(Mesh& mesh, const std::vector<Point>& welded_at);
 
-// Whether weld_touching_vertices would find any group to judge (a quick look, nothing changed).
-bool has_touching_vertices(const Mesh& mesh, double tolerance);
+// Whether weld_touching_vertices would find any group to judge (a quick look, nothing changed;
+// on `threads` threads as there).
+bool has_touching_vertices(const Mesh& mesh, double tolerance, unsigned threads = 0);
 
 }  // namespace holefill

@@ -53,15 +53,20 @@ std::optional<MeshFormat> choose_format(std::string_view first, std::uint64_t si
   return by_content.format;
 }
 
+// On one thread a text is read whole (never cut in two), else as the readers choose.
 io::Soup read_soup(MeshFormat format, std::string_view bytes, const fs::path& name,
-                   LoadReport& report) {
+                   LoadReport& report, unsigned threads) {
+  const bool one = threads == 1;
   switch (format) {
     case MeshFormat::Obj:
-      return io::parse_obj(bytes, name, report);
+      return one ? io::parse_obj(bytes, name, report, std::string_view::npos)
+                 : io::parse_obj(bytes, name, report);
     case MeshFormat::Off:
-      return io::parse_off(bytes, name, report);
+      return one ? io::parse_off(bytes, name, report, std::string_view::npos)
+                 : io::parse_off(bytes, name, report);
     case MeshFormat::Ply:
-      return io::parse_ply(bytes, name, report);
+      return one ? io::parse_ply(bytes, name, report, std::string_view::npos)
+                 : io::parse_ply(bytes, name, report);
     case MeshFormat::Stl:
       return io::parse_stl(bytes, name, report);
   }
@@ -93,7 +98,7 @@ void check_start(const io::FileStart& start, MeshFormat format, const fs::path& 
 // The polygons `bytes` describe, read as `format` when the file's start decided it, else as the
 // contents and name choose (the report's format set).
 io::Soup soup_of_bytes(const std::string& bytes, const fs::path& name, LoadReport& report,
-                       std::optional<MeshFormat> format) {
+                       std::optional<MeshFormat> format, unsigned threads) {
   // OpenMesh prints why add_face refuses a face; we count those faces and say so instead.
   omerr().disable();
   if (bytes.empty()) io::fail(name, "is empty");
@@ -103,11 +108,12 @@ io::Soup soup_of_bytes(const std::string& bytes, const fs::path& name, LoadRepor
   const std::string_view text = io::binary_stl_size_matches(bytes, triangles)
                                     ? std::string_view(bytes)
                                     : io::without_byte_order_mark(bytes);
-  return read_soup(*format, text, name, report);
+  return read_soup(*format, text, name, report, threads);
 }
 
-Mesh mesh_of_soup(io::Soup soup, const fs::path& name, LoadReport& report) {
-  Mesh mesh = io::build_mesh(std::move(soup), report);
+Mesh mesh_of_soup(io::Soup soup, const fs::path& name, LoadReport& report, unsigned threads) {
+  Mesh mesh = io::build_mesh(std::move(soup), report,
+                             threads == 1 ? io::kOneThreadAlways : io::kTwoThreadsFrom);
   if (mesh.n_faces() == 0) throw InvalidMeshError(name, "contains no faces");
   io::add_warnings(report);
   return mesh;
@@ -146,16 +152,17 @@ const std::vector<std::string>& writable_extensions() {
   return extensions;
 }
 
-Mesh load_mesh_from_memory(const std::string& bytes, const fs::path& name, LoadReport* report) {
+Mesh load_mesh_from_memory(const std::string& bytes, const fs::path& name, LoadReport* report,
+                           unsigned threads) {
   LoadReport local;
   LoadReport& out = report ? *report : local;
   out = LoadReport{};
-  return mesh_of_soup(soup_of_bytes(bytes, name, out, std::nullopt), name, out);
+  return mesh_of_soup(soup_of_bytes(bytes, name, out, std::nullopt, threads), name, out, threads);
 }
 
 // The format is decided once: from the file's start when the file is bigger (to check that start
 // before the rest is read), else from all of it.
-Mesh load_mesh(const fs::path& path, LoadReport* report) {
+Mesh load_mesh(const fs::path& path, LoadReport* report, unsigned threads) {
   const io::FileStart start = io::read_file_start(path);
   LoadReport local;
   LoadReport& out = report ? *report : local;
@@ -166,8 +173,8 @@ Mesh load_mesh(const fs::path& path, LoadReport* report) {
     if (format) check_start(start, *format, path);
   }
   // The file's bytes are freed before the mesh is built, so that they are not held at the peak.
-  io::Soup soup = soup_of_bytes(io::read_file_bytes(path), path, out, format);
-  return mesh_of_soup(std::move(soup), path, out);
+  io::Soup soup = soup_of_bytes(io::read_file_bytes(path), path, out, format, threads);
+  return mesh_of_soup(std::move(soup), path, out, threads);
 }
 
 void write_mesh_pieces(const Mesh& mesh, MeshFormat format, const fs::path& name,

@@ -17,6 +17,8 @@ namespace holefill::io {
 // From this many faces on, the assembly uses a second thread where the machine has more than one
 // core (below, starting a thread costs more than it saves).
 inline constexpr std::size_t kTwoThreadsFrom = std::size_t{1} << 15;
+// A `from` that no mesh reaches: one thread whatever the size (a caller asked for one).
+inline constexpr std::size_t kOneThreadAlways = ~std::size_t{0};
 
 // Whether assembling `faces` faces uses two threads, from `from` faces on.
 inline bool use_two_threads(std::size_t faces, std::size_t from) {

@@ -1,0 +1,105 @@
+// How many threads the library starts, counted where every thread starts (pthread_create,
+// thread_counter.h): a count of threads given to loading, preparing and filling bounds every
+// stage of them, one thread starts none, and the full search asked to choose uses every core
+// this process may run on.
+#include <gtest/gtest.h>
+#include <sched.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "holefill/fill.h"
+#include "holefill/io.h"
+#include "holefill/prepare.h"
+#include "holefill/triangulate.h"
+#include "test_meshes.h"
+#include "thread_counter.h"
+
+namespace holefill::testing {
+namespace {
+
+// An OBJ of a wavy n x n grid of squares whose rows of squares were written apart (each row its
+// own vertices, so that stitching joins them again: a boundary point per vertex to search
+// around), with a hole of 144 edges (more than the full search's threshold for threads) and
+// small holes around it. Big enough that every stage that can use threads does: more than 8 MB
+// of text, more than 65,536 faces.
+std::string rows_apart_obj(int n) {
+  const auto removed = [](int i, int j) {
+    return (i >= 100 && i < 136 && j >= 100 && j < 136) || (i % 40 == 7 && j % 40 == 7);
+  };
+  std::string text;
+  char line[96];
+  for (int j = 0; j < n; ++j) {
+    for (int row = j; row <= j + 1; ++row) {
+      for (int i = 0; i <= n; ++i) {
+        const double x = i / 100.0, y = row / 100.0;
+        std::snprintf(line, sizeof line, "v %.9f %.9f %.9f\n", x, y,
+                      0.05 * std::sin(3.0 * x) * std::cos(2.0 * y));
+        text += line;
+      }
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    const int low = 2 * j * (n + 1) + 1, high = low + n + 1;  // the row's two lines of vertices
+    for (int i = 0; i < n; ++i) {
+      if (removed(i, j)) continue;
+      std::snprintf(line, sizeof line, "f %d %d %d\nf %d %d %d\n", low + i, low + i + 1,
+                    high + i + 1, low + i, high + i + 1, high + i);
+      text += line;
+    }
+  }
+  return text;
+}
+
+// Loads, prepares and fills (the holes, not the border) on `threads` threads; the filled mesh as
+// an OBJ.
+std::string filled(const std::string& obj, unsigned threads) {
+  Mesh mesh = load_mesh_from_memory(obj, "rows.obj", nullptr, threads);
+  PrepareOptions preparation;
+  preparation.threads = threads;
+  const PreparedMesh prepared = prepare_mesh(mesh, preparation);
+  FillOptions options;
+  options.threads = threads;
+  HoleSelection holes;
+  holes.max_boundary_edges = 200;  // not the grid's border
+  fill_holes(mesh, prepared.holes, options, holes);
+  return mesh_to_bytes(mesh, "filled.obj");
+}
+
+unsigned cores_of_this_process() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  EXPECT_EQ(sched_getaffinity(0, sizeof set, &set), 0);
+  return static_cast<unsigned>(CPU_COUNT(&set));
+}
+
+TEST(ThreadCount, OneThreadStartsNoThreadInLoadingPreparingOrFilling) {
+  const std::string obj = rows_apart_obj(280);
+  ASSERT_GT(obj.size(), std::size_t{8} << 20);
+  reset_thread_counts();
+  const std::string one = filled(obj, 1);
+  EXPECT_EQ(thread_counts().started, 0u);
+  // The same work on three threads does start some (the count sees them), never more than two
+  // beside the caller, and gives the same file.
+  reset_thread_counts();
+  EXPECT_EQ(filled(obj, 3), one);
+  const ThreadCounts three = thread_counts();
+  EXPECT_GT(three.started, 0u);
+  EXPECT_LE(three.most_at_once, 2u);
+  // Stitching joined the rows and the holes were closed: the work was done.
+  const Mesh mesh = load_mesh_from_memory(one, "one.obj");
+  EXPECT_TRUE(find_holes(mesh).size() == 1u);  // the grid's outer border only
+}
+
+TEST(ThreadCount, TheFullSearchLeftToChooseUsesEveryCoreOfTheProcess) {
+  const HolePolygon polygon = wavy_hole(300);
+  reset_thread_counts();
+  ASSERT_TRUE(triangulate_polygon(polygon, TriangulateOptions{}).has_value());
+  // 300 points make 19 strips of rows: more than the cores of most machines.
+  EXPECT_EQ(thread_counts().started, std::min(cores_of_this_process(), 19u) - 1);
+}
+
+}  // namespace
+}  // namespace holefill::testing
