@@ -231,7 +231,7 @@ Sparse grid_fairing_system(int side, int order, unsigned seed) {
   return block;
 }
 
-bool same_bits(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+bool same_matrix_bits(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return a.rows() == b.rows() && a.cols() == b.cols() &&
          std::equal(a.data(), a.data() + a.size(), b.data());
 }
@@ -246,11 +246,11 @@ TEST(CancellableLdlt, FactorIsEigensBitForBit) {
     ours.analyzePattern(system);
     ASSERT_TRUE(ours.factorize_unless_cancelled(system, nullptr));
     ASSERT_EQ(ours.info(), Eigen::Success);
-    EXPECT_TRUE(same_bits(Eigen::MatrixXd(ours.matrixL().nestedExpression()),
-                          Eigen::MatrixXd(eigen.matrixL().nestedExpression())));
-    EXPECT_TRUE(same_bits(ours.vectorD(), eigen.vectorD()));
+    EXPECT_TRUE(same_matrix_bits(Eigen::MatrixXd(ours.matrixL().nestedExpression()),
+                                 Eigen::MatrixXd(eigen.matrixL().nestedExpression())));
+    EXPECT_TRUE(same_matrix_bits(ours.vectorD(), eigen.vectorD()));
     const Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(system.rows(), 3);
-    EXPECT_TRUE(same_bits(ours.solve(rhs), eigen.solve(rhs)));
+    EXPECT_TRUE(same_matrix_bits(ours.solve(rhs), eigen.solve(rhs)));
   }
 }
 
