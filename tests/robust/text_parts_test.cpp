@@ -1,11 +1,16 @@
-// A big OBJ, OFF or ASCII PLY is read in two parts on two threads (two_parts.h): cut at every
+// A big OBJ, OFF or ASCII PLY is read in two parts on two threads (two_parts.h), a binary PLY's
+// faces apart from its vertices (ply_reader.cpp): cut at every
 // line of files that carry state across the cut (OBJ: relative indices into the first part,
 // materials, groups, objects and smoothing groups set before it, colours, texture coordinates
 // and normals on one side only, material libraries, ignored statements, continued lines; OFF and
 // PLY: the vertex and face records, colours typed by the first face, comments, blank and extra
 // lines; all: mixed line ends), with errors of every kind on either side, the soup, the report
 // and every error message are those of the one-thread reading, byte for byte.
+#include <array>
+#include <bit>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -372,6 +377,73 @@ TEST(PlyParts, ErrorsOnEitherSideAreOneReadingsMessages) {
   // Truncated in the vertices, in the faces.
   expect_same_ply_at_every_cut(kPlyHeader + kPlyVertices.substr(0, 16));
   expect_same_ply_at_every_cut(start + first_face + "3 1 3 2 7\n");
+}
+
+// A binary PLY (in this machine's byte order) of the elements of kPlyHeader: vertices x, y, z,
+// red, two edges, faces as lists of int with a short flag each; `tail` after the last record.
+std::string binary_ply(const std::vector<std::array<double, 4>>& vertices,
+                       const std::vector<std::vector<int>>& faces, const std::string& tail = "") {
+  std::string text = std::string("ply\nformat binary_") +
+                     (std::endian::native == std::endian::little ? "little" : "big") +
+                     "_endian 1.0\nelement vertex " + std::to_string(vertices.size()) +
+                     "\nproperty float x\nproperty float y\nproperty double z\nproperty uchar "
+                     "red\nelement edge 2\nproperty int a\nproperty int b\nelement face " +
+                     std::to_string(faces.size()) +
+                     "\nproperty list uchar int vertex_indices\nproperty short flag\nend_header\n";
+  const auto put = [&text](auto value) {
+    char raw[sizeof value];
+    std::memcpy(raw, &value, sizeof value);
+    text.append(raw, sizeof value);
+  };
+  for (const auto& v : vertices) {
+    put(static_cast<float>(v[0])), put(static_cast<float>(v[1])), put(v[2]);
+    put(static_cast<unsigned char>(v[3]));
+  }
+  for (const int end : {0, 1, 1, 2}) put(end);
+  for (const auto& face : faces) {
+    put(static_cast<unsigned char>(face.size()));
+    for (const int corner : face) put(corner);
+    put(static_cast<short>(face.size()));
+  }
+  return text + tail;
+}
+
+// Read whole and with its faces apart (any byte inside the file asks for the cut).
+void expect_same_binary_ply_either_way(const std::string& text) {
+  const std::string whole = read_whole_or_cut(text, std::string::npos, io::parse_ply, "/d/b.ply");
+  for (const std::size_t at : {std::size_t{0}, text.size() / 2, text.size() - 1}) {
+    EXPECT_EQ(read_whole_or_cut(text, at, io::parse_ply, "/d/b.ply"), whole) << at;
+  }
+}
+
+const std::vector<std::array<double, 4>> kBinaryVertices{
+    {0, 0, 0, 1}, {1, 0, 0, 2}, {0, 1, 0, 3}, {1, 1, 0.1, 4}, {2, 0, 0, 5}};
+const std::vector<std::vector<int>> kBinaryFaces{{0, 1, 2}, {1, 3, 2}, {1, 4, 3, 2}, {0, 1, 3}};
+
+TEST(PlyParts, BinaryFacesReadApartFromTheVerticesAsOneReading) {
+  expect_same_binary_ply_either_way(binary_ply(kBinaryVertices, kBinaryFaces));
+  expect_same_binary_ply_either_way(binary_ply(kBinaryVertices, kBinaryFaces, "extra"));
+  EXPECT_EQ(
+      read_whole_or_cut(binary_ply(kBinaryVertices, kBinaryFaces), 0, io::parse_ply).substr(0, 8),
+      "0x0p+0 0");  // read, not refused
+}
+
+TEST(PlyParts, BinaryErrorsOnEitherSideAreOneReadingsMessages) {
+  auto bad_vertex = kBinaryVertices;
+  bad_vertex[1][2] = std::nan("");
+  auto bad_face = kBinaryFaces;
+  bad_face[2][1] = 9;
+  expect_same_binary_ply_either_way(binary_ply(bad_vertex, kBinaryFaces));
+  expect_same_binary_ply_either_way(binary_ply(kBinaryVertices, bad_face));
+  // An error in each part: the vertex's is the message.
+  expect_same_binary_ply_either_way(binary_ply(bad_vertex, bad_face));
+  // Truncated in the faces; a list longer than the file.
+  const std::string whole = binary_ply(kBinaryVertices, kBinaryFaces);
+  expect_same_binary_ply_either_way(whole.substr(0, whole.size() - 5));
+  auto long_list = kBinaryFaces;
+  long_list[0].assign(200, 0);
+  const std::string listed = binary_ply(kBinaryVertices, long_list);
+  expect_same_binary_ply_either_way(listed.substr(0, listed.size() - 700));
 }
 
 }  // namespace

@@ -65,8 +65,10 @@ Soup parse_off(std::string_view text, const std::filesystem::path& path, LoadRep
 // than the header's properties is refused, naming it. Data after the counted records: a warning.
 Soup parse_ply(std::string_view bytes, const std::filesystem::path& path, LoadReport& report);
 // The same, with an ASCII body cut at the first line boundary from byte `split_near` of the file
-// on, when there is one, and the part after it read on a second thread: the same soup, warnings
-// and messages. The three-argument form cuts files of 8 MB and more in the middle.
+// on, when there is one, and the part after it read on a second thread; a binary body, when
+// `split_near` lies inside the file, cut where its face element begins (when the records before
+// it have one size), the faces read on a second thread: the same soup, warnings and messages.
+// The three-argument form cuts files of 8 MB and more (in the middle, for ASCII).
 Soup parse_ply(std::string_view bytes, const std::filesystem::path& path, LoadReport& report,
                std::size_t split_near);
 
