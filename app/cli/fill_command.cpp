@@ -49,7 +49,7 @@ FillCounts report_problems(const std::vector<HoleFill>& fills, const std::string
     if (!fill.features_note.empty() && fill.features.continued())
       err << prefix << fill.hole_id << ": " << fill.features_note << "\n";
     if (fill.failed()) {
-      err << prefix << fill.hole_id << " not filled: " << fill.failure
+      err << prefix << fill.hole_id << " not filled: " << fill.failure.message
           << (fill.refused_intersections ? "; --allow-intersections keeps it" : "") << "\n";
     }
   }

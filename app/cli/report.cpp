@@ -65,7 +65,10 @@ Json fill_json(const HoleFill& fill) {
              {"boundary_edges", fill.boundary_edges},
              {"filled", !fill.failed()},
              {"stage", to_string(fill.stage())}};
-  if (fill.failed()) entry["failure"] = fill.failure;
+  if (fill.failed()) {
+    entry["failure"] = fill.failure.message;
+    entry["failure_kind"] = to_string(fill.failure.kind);
+  }
   if (!fill.refinement_note.empty()) entry["refinement_note"] = fill.refinement_note;
   if (!fill.smoothing_note.empty()) entry["smoothing_note"] = fill.smoothing_note;
   if (!fill.attributes_note.empty()) entry["attributes_note"] = fill.attributes_note;

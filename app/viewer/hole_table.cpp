@@ -62,7 +62,7 @@ std::vector<HoleRow> hole_rows(const Session& session) {
       row.stage += " +" + std::to_string(fill.joined_holes.size());
     }
     row.intersecting = fill.self_intersections > 0;
-    row.failure = fill.failed() ? fill.failure : session.islands().note[hole.id];
+    row.failure = fill.failed() ? fill.failure.message : session.islands().note[hole.id];
     row.refused_intersections = fill.refused_intersections > 0;
     rows.push_back(std::move(row));
   }

@@ -105,7 +105,7 @@ void Session::selection_changed() {
                        std::vector<std::string>(n)};
   for (const auto& group :
        group_loops(mesh(), holes_, none, {{selected_, joined_.front()}}, options_.join)) {
-    if (contains(group.holes, selected_)) bridge_problem_ = group.problem;
+    if (contains(group.holes, selected_)) bridge_problem_ = group.problem.message;
   }
 }
 

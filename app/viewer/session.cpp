@@ -258,7 +258,7 @@ std::optional<FillResult> Session::compute(const FillRequest& request, Progress*
     }
     if (fill.failed()) {
       result.all_ran = false;
-      result.notice = {"Hole " + std::to_string(id) + ": " + fill.failure, true};
+      result.notice = {"Hole " + std::to_string(id) + ": " + fill.failure.message, true};
     }
     done += static_cast<double>(holes_[id].size());
     if (progress) progress->set_fraction(done / total);

@@ -175,7 +175,7 @@ Row fill_and_measure(const CadCase& c, const quality::CutMesh& cut, const qualit
     const auto fills = fill_holes(filled, loops, recipe_options(recipe, a.feature_angle));
     const HoleFill& fill = fills.front();
     patch = {fill.patch.boundary, fill.patch.faces, fill.patch.new_vertices};
-    if (fill.failed()) row.notes = "not filled: " + fill.failure;
+    if (fill.failed()) row.notes = "not filled: " + fill.failure.message;
     if (!fill.smoothing_note.empty()) row.notes += fill.smoothing_note + " ";
     if (!fill.creases.empty()) row.notes += std::to_string(fill.creases.size()) + " creases ";
     if (!fill.features_note.empty()) row.notes += fill.features_note;

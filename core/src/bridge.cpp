@@ -180,33 +180,36 @@ double loop_distance(const Mesh& mesh, const Hole& a, const Hole& b) {
 
 // Why these loops cannot be joined (a loop through a vertex twice, two loops through one vertex),
 // or empty.
-std::string loops_problem(const std::vector<const Hole*>& loops) {
-  if (loops.size() < 2) return "joining needs at least two boundary loops";
+Failure loops_problem(const std::vector<const Hole*>& loops) {
+  if (loops.size() < 2) return {FailureKind::NoBridge, "joining needs at least two boundary loops"};
   if (loops.size() > kMostJoinedLoops) {
-    return "it holds " + std::to_string(loops.size() - 1) +
-           " other loops (islands, a bridged hole), more than the " +
-           std::to_string(kMostJoinedLoops - 1) +
-           " one patch joins (kMostJoinedLoops in bridge.h); --islands off fills each loop on its "
-           "own";
+    return {
+        FailureKind::TooManyLoops,
+        "it holds " + std::to_string(loops.size() - 1) +
+            " other loops (islands, a bridged hole), more than the " +
+            std::to_string(kMostJoinedLoops - 1) +
+            " one patch joins (kMostJoinedLoops in bridge.h); --islands off fills each loop on its "
+            "own"};
   }
   std::unordered_map<int, int> loop_of_vertex;
   for (const Hole* loop : loops) {
     for (const auto v : loop->vertices) {
       const auto [at, inserted] = loop_of_vertex.emplace(v.idx(), loop->id);
       if (inserted) continue;
-      return at->second == loop->id
-                 ? "hole " + std::to_string(loop->id) + " passes twice through vertex " +
-                       std::to_string(v.idx() + 1) + " (a pinched loop)"
-                 : "holes " + std::to_string(at->second) + " and " + std::to_string(loop->id) +
-                       " touch at vertex " + std::to_string(v.idx() + 1) +
-                       "; a patch joining them would leave a non-manifold vertex";
+      return {FailureKind::LoopsShareVertex,
+              at->second == loop->id
+                  ? "hole " + std::to_string(loop->id) + " passes twice through vertex " +
+                        std::to_string(v.idx() + 1) + " (a pinched loop)"
+                  : "holes " + std::to_string(at->second) + " and " + std::to_string(loop->id) +
+                        " touch at vertex " + std::to_string(v.idx() + 1) +
+                        "; a patch joining them would leave a non-manifold vertex"};
     }
   }
   std::size_t total = 0;
   for (const Hole* loop : loops) total += loop->size() + 2;
   if (total >= kMaxPolygonSize) {
-    return "the joined polygon would have " + std::to_string(total) +
-           " edges, more than the dynamic program takes";
+    return {FailureKind::TooManyEdges, "the joined polygon would have " + std::to_string(total) +
+                                           " edges, more than the dynamic program takes"};
   }
   return {};
 }
@@ -289,9 +292,10 @@ bool join_weighing_bridges(const Mesh& mesh, const std::vector<const Hole*>& loo
       }
     }
     if (!best) {
-      result.plan.failure = "no bridge from hole " + std::to_string(loop.id) + " to hole " +
-                            std::to_string(result.polygon.id) +
-                            " gives a valid triangulation of the region between them";
+      result.plan.failure = {FailureKind::NoBridge,
+                             "no bridge from hole " + std::to_string(loop.id) + " to hole " +
+                                 std::to_string(result.polygon.id) +
+                                 " gives a valid triangulation of the region between them"};
       return false;
     }
     result.polygon = std::move(best->joined);
@@ -311,9 +315,10 @@ bool join_along_shortest_bridges(const Mesh& mesh, const std::vector<const Hole*
   result.polygon = std::move(joined.joined);
   result.bridges = std::move(joined.bridges);
   if (!joined.triangulation) {
-    result.plan.failure = "the " + std::to_string(loops.size()) + " loops joined to hole " +
-                          std::to_string(result.polygon.id) +
-                          " by their shortest bridges have no valid triangulation";
+    result.plan.failure = {FailureKind::NoTriangulation,
+                           "the " + std::to_string(loops.size()) + " loops joined to hole " +
+                               std::to_string(result.polygon.id) +
+                               " by their shortest bridges have no valid triangulation"};
     return false;
   }
   result.plan.triangulation = std::move(joined.triangulation);
@@ -326,8 +331,8 @@ JoinedLoops plan_joined_loops(const Mesh& mesh, const std::vector<const Hole*>& 
                               const TriangulateOptions& options, const JoinOptions& join) {
   JoinedLoops result;
   if (!loops.empty()) result.polygon = *loops[0];
-  if (const std::string problem = loops_problem(loops); !problem.empty()) {
-    result.plan.failure = problem;
+  if (Failure problem = loops_problem(loops); problem.failed()) {
+    result.plan.failure = std::move(problem);
     return result;
   }
   try {
@@ -337,13 +342,15 @@ JoinedLoops plan_joined_loops(const Mesh& mesh, const std::vector<const Hole*>& 
     if (!joined) return result;
   } catch (const std::bad_alloc&) {
     result.plan.triangulation.reset();
-    result.plan.failure = "not enough memory to triangulate the joined loops";
+    result.plan.failure = {FailureKind::OutOfMemory,
+                           "not enough memory to triangulate the joined loops"};
     return result;
   }
   if (result.plan.triangulation->quality.degenerate > 0) {
     result.plan.triangulation.reset();
-    result.plan.failure =
-        "the triangulation of the joined loops would have a degenerate (zero-area) triangle";
+    result.plan.failure = {
+        FailureKind::DegenerateTriangle,
+        "the triangulation of the joined loops would have a degenerate (zero-area) triangle"};
   }
   return result;
 }

@@ -268,8 +268,9 @@ bool may_stay(Mesh& mesh, HoleFill& fill, const FillOptions& options,
     return false;
   }
   fill.refused_intersections = pairs;
-  fill.failure = "every patch tried intersects the mesh (the best in " + std::to_string(pairs) +
-                 (pairs == 1 ? " pair" : " pairs") + " of triangles), so it is left open";
+  fill.failure = {FailureKind::IntersectsMesh,
+                  "every patch tried intersects the mesh (the best in " + std::to_string(pairs) +
+                      (pairs == 1 ? " pair" : " pairs") + " of triangles), so it is left open"};
   return false;
 }
 

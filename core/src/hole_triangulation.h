@@ -19,7 +19,7 @@ HolePolygon hole_polygon(const Mesh& mesh, const Hole& hole);
 
 struct TriangulateHoleResult {
   std::optional<Patch> patch;  // set when the hole was triangulated
-  std::string failure;         // why not, otherwise
+  Failure failure;             // why not, otherwise
 };
 
 // The most times a hole's boundary may pass through one vertex for a patch to be planned: a

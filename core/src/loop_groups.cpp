@@ -35,30 +35,35 @@ std::string number(double value) {
   return text;
 }
 
-// Why holes a and b cannot be bridged as asked, or empty.
-std::string bridge_problem(const Mesh& mesh, const std::vector<Hole>& holes,
-                           const IslandMap& islands, std::pair<int, int> bridge,
-                           const std::vector<int>& bridged_with, const JoinOptions& options) {
+// Why holes a and b cannot be bridged as asked (FailureKind::BadBridge), or no failure.
+Failure bridge_problem(const Mesh& mesh, const std::vector<Hole>& holes, const IslandMap& islands,
+                       std::pair<int, int> bridge, const std::vector<int>& bridged_with,
+                       const JoinOptions& options) {
   const auto [a, b] = bridge;
   const std::string pair = "holes " + std::to_string(a) + " and " + std::to_string(b);
-  if (a == b) return "a bridge needs two different holes, got hole " + std::to_string(a) + " twice";
+  auto bad = [](std::string message) {
+    return Failure{FailureKind::BadBridge, std::move(message)};
+  };
+  if (a == b)
+    return bad("a bridge needs two different holes, got hole " + std::to_string(a) + " twice");
   for (const int hole : {a, b}) {
     if (bridged_with[hole] >= 0) {
-      return "hole " + std::to_string(hole) + " is bridged twice (to holes " +
-             std::to_string(bridged_with[hole]) + " and " + std::to_string(hole == a ? b : a) + ")";
+      return bad("hole " + std::to_string(hole) + " is bridged twice (to holes " +
+                 std::to_string(bridged_with[hole]) + " and " + std::to_string(hole == a ? b : a) +
+                 ")");
     }
     if (islands.outer[hole] >= 0 && islands.outer[hole] != (hole == a ? b : a)) {
-      return "hole " + std::to_string(hole) + " is an island of hole " +
-             std::to_string(islands.outer[hole]) +
-             " and is filled with it; bridge them with island detection off";
+      return bad("hole " + std::to_string(hole) + " is an island of hole " +
+                 std::to_string(islands.outer[hole]) +
+                 " and is filled with it; bridge them with island detection off");
     }
   }
   const double distance = gap(mesh, holes[a], holes[b]);
   const double size = std::max(diameter(mesh, holes[a]), diameter(mesh, holes[b]));
   if (distance > options.max_gap * size) {
-    return pair + " are too far apart to bridge: " + number(distance) +
-           " between their closest vertices, more than " + number(options.max_gap) +
-           " times the larger loop's diameter (" + number(size) + ")";
+    return bad(pair + " are too far apart to bridge: " + number(distance) +
+               " between their closest vertices, more than " + number(options.max_gap) +
+               " times the larger loop's diameter (" + number(size) + ")");
   }
   return {};
 }
@@ -88,8 +93,8 @@ std::vector<LoopGroup> group_loops(const Mesh& mesh, const std::vector<Hole>& ho
     }
   };
   for (const auto& bridge : bridges) {
-    const std::string problem = bridge_problem(mesh, holes, islands, bridge, bridged_with, options);
-    if (!problem.empty()) {
+    const Failure problem = bridge_problem(mesh, holes, islands, bridge, bridged_with, options);
+    if (problem.failed()) {
       // The pair stays open, each with what else it would have been filled with.
       for (const int hole : {bridge.first, bridge.second}) {
         if (group_of[hole] >= 0) {
@@ -133,7 +138,7 @@ bool selects(const HoleSelection& selection, const LoopGroup& group,
 
 GroupPlan plan_group(const Mesh& mesh, const std::vector<Hole>& holes, const LoopGroup& group,
                      const TriangulateOptions& options, const JoinOptions& join) {
-  if (!group.problem.empty()) {
+  if (group.problem.failed()) {
     return {holes[group.holes[0]], PlannedTriangulation{std::nullopt, group.problem}};
   }
   if (group.holes.size() == 1) {

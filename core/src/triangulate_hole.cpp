@@ -92,25 +92,28 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
                                         const TriangulateOptions& options) {
   PlannedTriangulation result;
   if (hole.size() < 3) {
-    result.failure = "a boundary loop of fewer than 3 edges cannot be triangulated";
+    result.failure = {FailureKind::TooFewEdges,
+                      "a boundary loop of fewer than 3 edges cannot be triangulated"};
     return result;
   }
   const bool restricted =
       options.restricted.above_edges > 0 && hole.size() > options.restricted.above_edges;
   if (hole.size() >= kMaxPolygonSize) {
-    result.failure = "the hole has " + std::to_string(hole.size()) +
-                     " boundary edges, more than the dynamic program can index (at most " +
-                     std::to_string(kMaxPolygonSize - 1) +
-                     ", the restricted search for large holes included); leave it out of the "
-                     "selection by a limit on boundary edges";
+    result.failure = {FailureKind::TooManyEdges,
+                      "the hole has " + std::to_string(hole.size()) +
+                          " boundary edges, more than the dynamic program can index (at most " +
+                          std::to_string(kMaxPolygonSize - 1) +
+                          ", the restricted search for large holes included); leave it out of the "
+                          "selection by a limit on boundary edges"};
     return result;
   }
   if (hole.size() > kMaxFullSearchEdges && !restricted) {
-    result.failure = "the hole has " + std::to_string(hole.size()) +
-                     " boundary edges, too many for the full dynamic program (at most " +
-                     std::to_string(std::min(kMaxFullSearchEdges, kMaxPolygonSize - 1)) +
-                     ": its time grows with the cube of the edge count); leave it out of the "
-                     "selection by a limit on boundary edges";
+    result.failure = {FailureKind::TooManyEdges,
+                      "the hole has " + std::to_string(hole.size()) +
+                          " boundary edges, too many for the full dynamic program (at most " +
+                          std::to_string(std::min(kMaxFullSearchEdges, kMaxPolygonSize - 1)) +
+                          ": its time grows with the cube of the edge count); leave it out of the "
+                          "selection by a limit on boundary edges"};
     return result;
   }
   std::unordered_map<int, int> seen;
@@ -123,52 +126,58 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
   }
   const bool pinched = most_passes > 1;
   if (most_passes > kMaxVertexPasses) {
-    result.failure = "its boundary passes through vertex " + std::to_string(busiest + 1) + " " +
-                     std::to_string(seen[busiest]) + " times, more than the " +
-                     std::to_string(kMaxVertexPasses) +
-                     " a patch is planned for (kMaxVertexPasses): it runs around pieces that "
-                     "meet only there, not around a hole (--remove-small-components removes "
-                     "small pieces)";
+    result.failure = {FailureKind::VertexPassedTooOften,
+                      "its boundary passes through vertex " + std::to_string(busiest + 1) + " " +
+                          std::to_string(seen[busiest]) + " times, more than the " +
+                          std::to_string(kMaxVertexPasses) +
+                          " a patch is planned for (kMaxVertexPasses): it runs around pieces that "
+                          "meet only there, not around a hole (--remove-small-components removes "
+                          "small pieces)"};
     return result;
   }
   if (const auto twins = detail::coincident_vertices(mesh, hole)) {
-    result.failure = "its boundary passes twice through one position (vertices " +
-                     std::to_string(twins->first + 1) + " and " +
-                     std::to_string(twins->second + 1) +
-                     " lie at the same place): a zero-width crack or an unwelded seam, which a "
-                     "patch could only cover with triangles of zero width";
+    result.failure = {
+        FailureKind::CoincidentPoints,
+        "its boundary passes twice through one position (vertices " +
+            std::to_string(twins->first + 1) + " and " + std::to_string(twins->second + 1) +
+            " lie at the same place): a zero-width crack or an unwelded seam, which a "
+            "patch could only cover with triangles of zero width"};
     return result;
   }
   if (is_back_of_lone_triangle(mesh, hole)) {
-    result.failure = "it is the back of a lone triangle (face " +
-                     std::to_string(mesh.opposite_face_handle(hole.halfedges[0]).idx() + 1) +
-                     "); filling it would only cover that face with a copy of itself";
+    result.failure = {FailureKind::BackOfLoneTriangle,
+                      "it is the back of a lone triangle (face " +
+                          std::to_string(mesh.opposite_face_handle(hole.halfedges[0]).idx() + 1) +
+                          "); filling it would only cover that face with a copy of itself"};
     return result;
   }
   try {
     result.triangulation = triangulate_polygon(hole_polygon(mesh, hole), options);
   } catch (const std::bad_alloc&) {
-    result.failure = "not enough memory to triangulate it";
+    result.failure = {FailureKind::OutOfMemory, "not enough memory to triangulate it"};
     return result;
   }
   if (!result.triangulation) {
-    result.failure =
+    result.failure = {
+        FailureKind::NoTriangulation,
         hole.size() > kMaxFullSearchEdges
             ? "the restricted search for large holes found no valid triangulation, and the hole "
               "has too many edges for the full one (more than " +
                   std::to_string(kMaxFullSearchEdges) + ")"
-            : "no valid triangulation: every one would duplicate an edge that already exists";
+            : "no valid triangulation: every one would duplicate an edge that already exists"};
   } else if (result.triangulation->quality.degenerate > 0) {
     result.triangulation.reset();
-    result.failure =
+    result.failure = {
+        FailureKind::DegenerateTriangle,
         "its triangulation would have a degenerate (zero-area) triangle: its boundary has "
-        "collinear or coincident points";
+        "collinear or coincident points"};
   } else if (const int v =
                  pinched ? vertex_left_pinched(mesh, hole, result.triangulation->triangles) : -1;
              v >= 0) {
     result.triangulation.reset();
-    result.failure = "its boundary passes more than once through vertex " + std::to_string(v + 1) +
-                     ", and its patch would not join the fans of faces there into one";
+    result.failure = {FailureKind::LeftPinched,
+                      "its boundary passes more than once through vertex " + std::to_string(v + 1) +
+                          ", and its patch would not join the fans of faces there into one"};
   }
   return result;
 }
@@ -194,7 +203,8 @@ TriangulateHoleResult apply_triangulation(Mesh& mesh, const Hole& hole,
       const detail::DeletionFlags flags(mesh);
       for (const auto added : patch.faces) mesh.delete_face(added, false);
       mesh.garbage_collection();
-      result.failure = "the mesh around this hole refused a patch triangle (non-manifold vertex)";
+      result.failure = {FailureKind::MeshRefusedTriangle,
+                        "the mesh around this hole refused a patch triangle (non-manifold vertex)"};
       return result;
     }
     mesh.property(tags.face_stage, face) = static_cast<std::uint8_t>(Stage::Triangulated);

@@ -20,7 +20,7 @@ namespace {
 const char* const kFillDoc =
     R"doc(Fills the mesh's holes in place, as `holefill fill` does, and returns one record
 per filled group of loops (the "holes" of fill's JSON report: hole, boundary_edges, filled,
-stage, failure, notes, self_intersections, new_vertices, new_faces, angles, area, valence
+stage, failure, failure_kind, notes, self_intersections, new_vertices, new_faces, angles, area, valence
 histogram, seconds).
 
 The mesh is prepared first as the command prepares it (seams stitched, small pieces removed

@@ -104,10 +104,10 @@ std::string described(const HoleFill& fill) {
   std::snprintf(number, sizeof number, "%a %a %a", fill.stats.min_angle_deg, fill.stats.area,
                 fill.stats.max_dihedral_deg);
   std::string text = std::to_string(fill.hole_id) + " " + to_string(fill.stage()) + " " +
-                     std::to_string(fill.stats.new_faces) + " " + number + " " + fill.failure +
-                     "|" + fill.smoothing_note + "|" + fill.refinement_note + "|" +
-                     fill.attributes_note + "|" + fill.islands_note + "|" +
-                     std::to_string(fill.self_intersections) + " " +
+                     std::to_string(fill.stats.new_faces) + " " + number + " " +
+                     to_string(fill.failure.kind) + " " + fill.failure.message + "|" +
+                     fill.smoothing_note + "|" + fill.refinement_note + "|" + fill.attributes_note +
+                     "|" + fill.islands_note + "|" + std::to_string(fill.self_intersections) + " " +
                      std::to_string(fill.refused_intersections) + " joined";
   for (const int id : fill.joined_holes) text += " " + std::to_string(id);
   for (const auto v : fill.patch.new_vertices) text += " v" + std::to_string(v.idx());

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "holefill/bridge.h"
+#include "holefill/failure.h"
 #include "holefill/features.h"
 #include "holefill/holes.h"
 #include "holefill/islands.h"
@@ -68,8 +69,8 @@ struct StageTimes {
 struct HoleFill {
   int hole_id = -1;
   std::size_t boundary_edges = 0;
-  Patch patch;          // patch.stage is the last stage run (Original: not started)
-  std::string failure;  // set when a stage could not run; the mesh is then unchanged
+  Patch patch;      // patch.stage is the last stage run (Original: not started)
+  Failure failure;  // set when a stage could not run; the mesh is then unchanged
   // The other loops this patch closes with hole_id's: its islands, or the hole bridged to it.
   std::vector<int> joined_holes;
   PatchStats stats;  // after the last stage run
@@ -102,7 +103,7 @@ struct HoleFill {
   IntersectionAvoidance avoidance;
 
   Stage stage() const { return patch.stage; }
-  bool failed() const { return !failure.empty(); }
+  bool failed() const { return failure.failed(); }
 };
 
 // What advance() did.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "holefill/bridge.h"
+#include "holefill/failure.h"
 #include "holefill/fill.h"
 #include "holefill/holes.h"
 #include "holefill/islands.h"
@@ -17,7 +18,7 @@ namespace holefill {
 
 struct LoopGroup {
   std::vector<int> holes;  // hole ids: the outer hole (or the first bridged one) first
-  std::string problem;     // why the group cannot be filled; then none of its loops is
+  Failure problem;         // why the group cannot be filled; then none of its loops is
   std::string note;        // why a loop inside the hole was left out of it (islands.h)
   std::size_t boundary_edges(const std::vector<Hole>& all) const;
 };

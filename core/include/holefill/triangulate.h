@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "holefill/failure.h"
 #include "holefill/mesh.h"
 #include "holefill/progress.h"
 #include "holefill/weights.h"
@@ -96,7 +97,7 @@ struct PolygonTriangulation {
 // A polygon's triangulation, or why there is none.
 struct PlannedTriangulation {
   std::optional<PolygonTriangulation> triangulation;
-  std::string failure;  // set when triangulation is empty
+  Failure failure;  // set when triangulation is empty
 };
 
 // The optimal triangulation under options.weight, or nothing when the forbidden chords leave no
