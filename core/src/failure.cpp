@@ -38,6 +38,8 @@ const char* to_string(FailureKind kind) {
       return "no-bridge";
     case FailureKind::BadBridge:
       return "bad-bridge";
+    case FailureKind::Cancelled:
+      return "cancelled";
   }
   return "unknown";
 }

@@ -107,7 +107,7 @@ bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillO
     });
   }
   if (cancelled(options)) {
-    fill.failure = kCancelledReason;
+    fill.failure = {FailureKind::Cancelled, kCancelledReason};
     return false;
   }
   TriangulateHoleResult result = apply_triangulation(mesh, hole, planned);
@@ -152,7 +152,7 @@ bool refine_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
   };
   std::string problem = refine_and_check(options.refine);
   if (cancelled(options)) {  // not undone: on a large mesh the undo takes seconds
-    fill.failure = kCancelledReason;
+    fill.failure = {FailureKind::Cancelled, kCancelledReason};
     return false;
   }
   if (!problem.empty() && options.refine.remesh) {
@@ -203,7 +203,7 @@ bool smooth_stage(Mesh& mesh, HoleFill& fill, const FillOptions& options,
     mesh.set_point(fill.patch.new_vertices[i], positions[i]);
   }
   if (cancelled(options)) {
-    fill.failure = kCancelledReason;
+    fill.failure = {FailureKind::Cancelled, kCancelledReason};
     return false;
   }
   fill.smoothing_note +=
@@ -264,7 +264,7 @@ bool may_stay(Mesh& mesh, HoleFill& fill, const FillOptions& options,
   fill.creases.clear();
   fill.self_intersections = 0;
   if (cancelled(options)) {  // the trial of the later stages was stopped: no verdict
-    fill.failure = kCancelledReason;
+    fill.failure = {FailureKind::Cancelled, kCancelledReason};
     return false;
   }
   fill.refused_intersections = pairs;
@@ -302,7 +302,7 @@ StageRun advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOp
   }
   if (!may_stay(mesh, fill, options, index)) return StageRun::Failed;
   if (cancelled(options)) {  // the measures below take a while on a large patch
-    fill.failure = kCancelledReason;
+    fill.failure = {FailureKind::Cancelled, kCancelledReason};
     return StageRun::Failed;
   }
   // Colours, normals, UVs, materials ... of the new elements.

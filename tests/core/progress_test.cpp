@@ -86,7 +86,7 @@ void expect_cancelled_stage_undone(SteppedHole& hole, FillOptions options) {
   progress.cancel();
   options.triangulate.progress = &progress;
   EXPECT_EQ(advance(hole.mesh, hole.hole, hole.fill, options), StageRun::Failed);
-  EXPECT_EQ(hole.fill.failure, kCancelledReason);
+  EXPECT_EQ(hole.fill.failure, (Failure{FailureKind::Cancelled, kCancelledReason}));
   EXPECT_EQ(hole.fill.stage(), stage);
   EXPECT_EQ(hole.mesh.n_faces(), faces);
   EXPECT_EQ(points_of(hole.mesh), before);

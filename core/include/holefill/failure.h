@@ -31,6 +31,7 @@ enum class FailureKind {
   NoBridge,          // no bridge gives a valid triangulation
   BadBridge,         // a requested bridge: one hole twice, a hole bridged twice or as an island,
                      // or holes too far apart
+  Cancelled,         // the caller's Progress asked the work to stop (progress.h)
 };
 
 // The kind's name as reports write it: "none", "too-few-edges", ... (lower case, hyphens).
