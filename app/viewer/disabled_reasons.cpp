@@ -12,7 +12,8 @@ std::string hole(const Session& session) { return "Hole " + std::to_string(sessi
 std::string why_not_step(const Session& session, Stage stage) {
   if (session.selected() < 0) return kNoSelection;
   const HoleFill& fill = session.fill(session.selected());
-  if (fill.failed()) return hole(session) + " failed (" + fill.failure.message + "): Reset hole first";
+  if (fill.failed())
+    return hole(session) + " failed (" + fill.failure.message + "): Reset hole first";
   const auto next = session.next_stage();
   if (!next) return hole(session) + " is filled: every stage has run";
   if (*next == stage) return {};
@@ -24,7 +25,8 @@ std::string why_not_step(const Session& session, Stage stage) {
 std::string why_not_fill_selected(const Session& session) {
   if (session.selected() < 0) return kNoSelection;
   const HoleFill& fill = session.fill(session.selected());
-  if (fill.failed()) return hole(session) + " failed (" + fill.failure.message + "): Reset hole first";
+  if (fill.failed())
+    return hole(session) + " failed (" + fill.failure.message + "): Reset hole first";
   if (!session.next_stage()) return hole(session) + " is filled: every stage has run";
   return {};
 }

@@ -128,7 +128,8 @@ class StageFill {
     for (const LoopGroup& group : group_loops(
              object_.mesh, holes, islands, arguments_.selection.bridges, arguments_.options.join)) {
       if (std::find(group.holes.begin(), group.holes.end(), hole) == group.holes.end()) continue;
-      if (group.problem.failed()) return "hole " + std::to_string(hole) + ": " + group.problem.message;
+      if (group.problem.failed())
+        return "hole " + std::to_string(hole) + ": " + group.problem.message;
       for (const int id : group.holes) loops_.push_back(&holes[id]);
     }
     return {};

@@ -89,7 +89,7 @@ TEST(CancelInPhase, IndexingFacesFailsTheSequencesStepAndALaterStepFilesAgain) {
   options.triangulate.progress = &cancel.progress;
   HoleFill cancelled;
   EXPECT_EQ(sequence.step(loops, cancelled, options), StageRun::Failed);
-  EXPECT_EQ(cancelled.failure, kCancelledReason);
+  EXPECT_EQ(cancelled.failure.kind, FailureKind::Cancelled) << cancelled.failure;
   EXPECT_EQ(cancelled.stage(), Stage::Original);
   EXPECT_EQ(mesh.n_faces(), before.n_faces());
   EXPECT_EQ(vertex_positions(mesh), vertex_positions(before));
@@ -145,7 +145,7 @@ TEST(CancelInPhase, RefiningBetweenCreasesIsUndone) {
   CancelInPhase cancel(phase::kRefiningBetweenCreases);
   options.triangulate.progress = &cancel.progress;
   EXPECT_EQ(advance(mesh, hole, fill, options), StageRun::Failed);
-  EXPECT_EQ(fill.failure, kCancelledReason);
+  EXPECT_EQ(fill.failure.kind, FailureKind::Cancelled) << fill.failure;
   EXPECT_EQ(fill.stage(), Stage::Triangulated);
   EXPECT_EQ(mesh.n_faces(), faces);
   EXPECT_EQ(vertex_positions(mesh), before);
@@ -163,7 +163,7 @@ TEST(CancelInPhase, FactorisingStopsFairingWithTheMeshUnchanged) {
   options.smooth.fair.order = 3;
   options.triangulate.progress = &cancel.progress;
   EXPECT_EQ(advance(mesh, hole, fill, options), StageRun::Failed);
-  EXPECT_EQ(fill.failure, kCancelledReason);
+  EXPECT_EQ(fill.failure.kind, FailureKind::Cancelled) << fill.failure;
   // Stopped in the factorisation: the solve after it (phase::kSmoothing again) never started.
   const auto factorising = std::find(cancel.entered_phases.begin(), cancel.entered_phases.end(),
                                      std::string(phase::kFactorising));

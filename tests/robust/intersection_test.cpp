@@ -149,6 +149,8 @@ TEST(PatchIntersections, TheCliLeavesTheHoleOpenAndExitsWithOneUnlessAllowed) {
   const std::string refused_json = read_file(dir / "report.json");
   EXPECT_NE(refused_json.find("\"refused_intersections\": "), std::string::npos) << refused_json;
   EXPECT_NE(refused_json.find("\"filled\": false"), std::string::npos) << refused_json;
+  EXPECT_NE(refused_json.find("\"failure_kind\": \"intersects-mesh\""), std::string::npos)
+      << refused_json;
 
   std::vector<std::string> allowed = fill;
   allowed.push_back("--allow-intersections");

@@ -119,10 +119,11 @@ enum class StageRun {
 // fill_hole, fill_joined_holes, advance_joined and fill_holes (for the holes they select).
 // Once options.triangulate.progress is cancelled, the stage running stops within a few hundred
 // milliseconds (its dynamic program, refinement, smoothing, the intersection checks; fairing
-// between the steps of its solve): Failed, fill.failure kCancelledReason. The mesh is as before
-// the stage when the cancel came before the stage changed it (during the dynamic program, the
-// splits, the smoothing); after that (the checks of a refinement) it keeps what the stage did, a
-// valid mesh, for a caller that cancels wants none of it and undoing costs seconds on a large one.
+// between the steps of its solve): Failed, fill.failure of kind FailureKind::Cancelled. The
+// mesh is as before the stage when the cancel came before the stage changed it (during the
+// dynamic program, the splits, the smoothing); after that (the checks of a refinement) it keeps
+// what the stage did, a valid mesh, for a caller that cancels wants none of it and undoing costs
+// seconds on a large one.
 StageRun advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions& options);
 
 // Runs the stages up to options.last_stage on one hole.
