@@ -49,7 +49,6 @@ class Progress {
 // a few hundred milliseconds. A phase lasts until the next is entered; a fill's stages enter
 // theirs as they start.
 namespace phase {
-inline constexpr std::string_view kReading = "reading";               // load_mesh's parse
 inline constexpr std::string_view kIndexingFaces = "indexing faces";  // before a fill's checks
 inline constexpr std::string_view kTriangulating = "triangulating";
 inline constexpr std::string_view kRefining = "refining";
