@@ -4,6 +4,7 @@
 #include <atomic>
 
 #include "available_cores.h"
+#include "group_plan.h"
 #include "holefill/attributes.h"
 #include "parallel_indices.h"
 #include "patch_apart.h"

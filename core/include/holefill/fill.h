@@ -9,6 +9,7 @@
 #include "holefill/bridge.h"
 #include "holefill/failure.h"
 #include "holefill/features.h"
+#include "holefill/hole_selection.h"
 #include "holefill/holes.h"
 #include "holefill/islands.h"
 #include "holefill/mesh.h"
@@ -140,17 +141,6 @@ HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
 // One loop: advance() itself.
 StageRun advance_joined(Mesh& mesh, const std::vector<const Hole*>& loops, HoleFill& fill,
                         const FillOptions& options);
-
-// Which holes fill_holes takes: the listed ids (all when empty), and only those with at most
-// max_boundary_edges boundary edges (no limit when 0). A hole comes with its islands and the
-// hole bridged to it (the limit then applies to their edges together; listing any one of them
-// takes them all).
-struct HoleSelection {
-  std::vector<int> hole_ids;
-  std::size_t max_boundary_edges = 0;
-  std::vector<std::pair<int, int>> bridges = {};  // pairs of holes joined by one band (bridge.h)
-  bool includes(const Hole& hole) const;
-};
 
 // Pairs of a patch triangle and another triangle of the mesh (the patch's own included) that
 // intersect other than along the vertices and edges they share. Degenerate triangles are skipped.

@@ -1,6 +1,6 @@
 // Which boundary loops fill_holes closes with one patch: a hole alone, a hole with its islands
-// (islands.h), or holes bridged into one band (HoleSelection::bridges, bridge.h), and the plan
-// of each group's triangulation.
+// (islands.h), or holes bridged into one band (HoleSelection::bridges in hole_selection.h,
+// bridge.h).
 #pragma once
 
 #include <string>
@@ -9,7 +9,6 @@
 
 #include "holefill/bridge.h"
 #include "holefill/failure.h"
-#include "holefill/fill.h"
 #include "holefill/holes.h"
 #include "holefill/islands.h"
 #include "holefill/mesh.h"
@@ -32,20 +31,5 @@ std::vector<LoopGroup> group_loops(const Mesh& mesh, const std::vector<Hole>& ho
                                    const IslandMap& islands,
                                    const std::vector<std::pair<int, int>>& bridges,
                                    const JoinOptions& options = {});
-
-// Whether fill_holes takes the group: one of its holes is listed (or none are), and its loops
-// have at most selection.max_boundary_edges edges together.
-bool selects(const HoleSelection& selection, const LoopGroup& group,
-             const std::vector<Hole>& holes);
-
-struct GroupPlan {
-  Hole polygon;  // the hole itself, or the loops joined by bridges
-  PlannedTriangulation plan;
-};
-
-// The group's triangulation: plan_triangulation for a lone hole, plan_joined_loops otherwise;
-// the group's problem as the failure when it has one.
-GroupPlan plan_group(const Mesh& mesh, const std::vector<Hole>& holes, const LoopGroup& group,
-                     const TriangulateOptions& options, const JoinOptions& join = {});
 
 }  // namespace holefill
