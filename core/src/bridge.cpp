@@ -23,7 +23,7 @@ using Bridges = std::vector<std::pair<VertexHandle, VertexHandle>>;
 // The polygon the dynamic program sees: hole_polygon's, plus the chords that would repeat a bridge
 // (between the other copies of its two endpoints).
 HolePolygon joined_hole_polygon(const Mesh& mesh, const Hole& joined, const Bridges& bridges) {
-  HolePolygon polygon = hole_polygon(mesh, joined);
+  HolePolygon polygon = detail::hole_polygon(mesh, joined);
   const int n = static_cast<int>(joined.vertices.size());
   std::unordered_map<int, std::vector<int>> positions;
   for (int i = 0; i < n; ++i) positions[joined.vertices[i].idx()].push_back(i);

@@ -8,6 +8,7 @@
 #include "avoid_intersections.h"
 #include "feature_fill.h"
 #include "feature_regions.h"
+#include "group_plan.h"
 #include "hole_triangulation.h"
 #include "holefill/attributes.h"
 #include "holefill/errors.h"
@@ -97,8 +98,9 @@ bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillO
                        const PlannedTriangulation* plan, const detail::MeshFaceIndex* index) {
   enter_phase(progress_of(options), phase::kTriangulating);
   PlannedTriangulation planned;
-  fill.times.triangulate_seconds +=
-      timed([&] { planned = plan ? *plan : plan_triangulation(mesh, hole, options.triangulate); });
+  fill.times.triangulate_seconds += timed([&] {
+    planned = plan ? *plan : detail::plan_triangulation(mesh, hole, options.triangulate);
+  });
   if (options.avoid_intersections) {
     fill.times.avoid_seconds = timed([&] {
       planned = detail::avoid_intersections(mesh, hole, std::move(planned), options.triangulate,
@@ -110,7 +112,7 @@ bool triangulate_stage(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillO
     fill.failure = {FailureKind::Cancelled, kCancelledReason};
     return false;
   }
-  TriangulateHoleResult result = apply_triangulation(mesh, hole, planned);
+  detail::TriangulateHoleResult result = detail::apply_triangulation(mesh, hole, planned);
   if (!result.patch) {
     fill.failure = result.failure;
     return false;
@@ -379,11 +381,6 @@ HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options) {
   return fill;
 }
 
-bool HoleSelection::includes(const Hole& hole) const {
-  if (max_boundary_edges && hole.size() > max_boundary_edges) return false;
-  return hole_ids.empty() || std::find(hole_ids.begin(), hole_ids.end(), hole.id) != hole_ids.end();
-}
-
 HoleFill fill_joined_holes(Mesh& mesh, const std::vector<const Hole*>& loops,
                            const FillOptions& options) {
   HoleFill fill;
@@ -431,7 +428,7 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
   std::vector<LoopGroup> chosen;
   for (auto& group : group_loops(mesh, holes, find_islands(mesh, holes, options.islands),
                                  selection.bridges, options.join)) {
-    if (selects(selection, group, holes)) chosen.push_back(std::move(group));
+    if (detail::selects(selection, group, holes)) chosen.push_back(std::move(group));
   }
   for (const auto& group : chosen) {
     std::vector<const Hole*> loops;

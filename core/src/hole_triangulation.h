@@ -11,7 +11,7 @@
 #include "holefill/patch.h"
 #include "holefill/triangulate.h"
 
-namespace holefill {
+namespace holefill::detail {
 
 // The hole's polygon as the dynamic program sees it: points, the normals of the faces across its
 // edges, and the chords that already exist in the mesh.
@@ -39,4 +39,4 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
 TriangulateHoleResult apply_triangulation(Mesh& mesh, const Hole& hole,
                                           const PlannedTriangulation& plan);
 
-}  // namespace holefill
+}  // namespace holefill::detail

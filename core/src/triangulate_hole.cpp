@@ -9,7 +9,7 @@
 #include "hole_triangulation.h"
 #include "vertex_link.h"
 
-namespace holefill {
+namespace holefill::detail {
 
 HolePolygon hole_polygon(const Mesh& mesh, const Hole& hole) {
   HolePolygon polygon;
@@ -214,4 +214,4 @@ TriangulateHoleResult apply_triangulation(Mesh& mesh, const Hole& hole,
   return result;
 }
 
-}  // namespace holefill
+}  // namespace holefill::detail

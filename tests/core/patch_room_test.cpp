@@ -28,7 +28,7 @@ std::pair<AddedCounts, detail::PatchRoom> filled_and_estimated(Stage last) {
   Mesh mesh = capless_sphere();
   const std::vector<Hole> holes = find_holes(mesh);
   EXPECT_EQ(holes.size(), 1u);
-  const PlannedTriangulation plan = plan_triangulation(mesh, holes[0], {});
+  const PlannedTriangulation plan = detail::plan_triangulation(mesh, holes[0], {});
   EXPECT_TRUE(plan.triangulation.has_value());
   const detail::PatchRoom room =
       detail::patch_room(mesh, holes[0], *plan.triangulation, last >= Stage::Refined);

@@ -54,7 +54,7 @@ TriangulateOptions restricted_for(const Hole& hole) {
 TEST(LargeHole, ARestrictedTriangulationThatFoldsIsReplacedByTheFullSearchs) {
   const StaircaseHole cut = staircase_hole(50);
   ASSERT_EQ(cut.holes.size(), 2u);
-  const HolePolygon polygon = hole_polygon(cut.mesh, cut.round());
+  const HolePolygon polygon = detail::hole_polygon(cut.mesh, cut.round());
   const TriangulateOptions options = restricted_for(cut.round());
 
   const auto restricted = triangulate_polygon_restricted(polygon, options);

@@ -19,6 +19,9 @@
 namespace holefill::testing {
 namespace {
 
+using detail::kMaxVertexPasses;
+using detail::plan_triangulation;
+
 // A unit cube without its top face: a hole of 4 edges.
 Mesh open_cube() {
   const Mesh cube = surface_of({{0, 1}, {0, 1}, {0, 1}, [](int, int, int) { return true; }});

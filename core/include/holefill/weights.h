@@ -12,8 +12,9 @@
 // default): the smallest angle alone happily folds a patch over itself on a curved hole, or cuts
 // across a tube, so a triangulation that stays under the limit always wins, and among those that
 // cannot the one bending least. Under the limit the paper's order decides; a limit of pi
-// reproduces it exactly. (bench/quality: 45 degrees halves the distance to the truth on a torus
-// hole against 90, with the same triangle angles.)
+// reproduces it exactly. (Measured by the project's quality benchmark, holefill-quality: 45
+// degrees halves the distance to the truth on a torus hole against 90, with the same triangle
+// angles.)
 //
 // A weight's value is one 64-bit key (the degenerate count, then up to three quantised angle
 // terms, compared as an integer) and the area; how the key's bits are laid out is the library's
