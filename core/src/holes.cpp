@@ -113,16 +113,11 @@ std::size_t separate_touching_holes(Mesh& mesh, const std::vector<Hole>& holes) 
   return added;
 }
 
-std::vector<Hole> find_holes(const Mesh& mesh) {
-  std::vector<Hole> holes;
-  std::vector<bool> visited(mesh.n_halfedges(), false);
-  for (const auto h : mesh.halfedges()) {
-    if (visited[h.idx()] || !mesh.is_boundary(h) || detail::is_deleted(mesh, h)) continue;
-    Hole hole = hole_through(mesh, h);
-    for (const auto loop_h : hole.halfedges) visited[loop_h.idx()] = true;
-    holes.push_back(std::move(hole));
-  }
+namespace {
 
+// find_holes' flags, order and ids for `holes`, the loops each described from its lowest halfedge
+// index and listed in the order of those indices.
+std::vector<Hole> as_found(std::vector<Hole> holes) {
   std::unordered_map<int, int> loops_at_vertex;
   for (const auto& hole : holes) {
     for (const auto v : hole.vertices) ++loops_at_vertex[v.idx()];
@@ -136,6 +131,64 @@ std::vector<Hole> find_holes(const Mesh& mesh) {
                    [](const Hole& a, const Hole& b) { return a.size() > b.size(); });
   for (std::size_t i = 0; i < holes.size(); ++i) holes[i].id = static_cast<int>(i);
   return holes;
+}
+
+}  // namespace
+
+std::vector<Hole> find_holes(const Mesh& mesh) {
+  std::vector<Hole> holes;
+  std::vector<bool> visited(mesh.n_halfedges(), false);
+  for (const auto h : mesh.halfedges()) {
+    if (visited[h.idx()] || !mesh.is_boundary(h) || detail::is_deleted(mesh, h)) continue;
+    Hole hole = hole_through(mesh, h);
+    for (const auto loop_h : hole.halfedges) visited[loop_h.idx()] = true;
+    holes.push_back(std::move(hole));
+  }
+  return as_found(std::move(holes));
+}
+
+// Separation relinks only the loops that pass a vertex more than once, within each: the others
+// are kept as found, and those are walked again from their lowest halfedges, as the scan of
+// find_holes would meet them.
+std::vector<Hole> find_separated_holes(Mesh& mesh) {
+  std::vector<Hole> holes = find_holes(mesh);
+  if (separate_touching_holes(mesh, holes) == 0) return holes;
+  std::vector<Hole> loops;
+  for (Hole& hole : holes) {
+    if (hole.repeated_vertices == 0) {
+      loops.push_back(std::move(hole));
+      continue;
+    }
+    std::vector<HalfedgeHandle> halfedges = hole.halfedges;
+    std::sort(halfedges.begin(), halfedges.end());
+    std::unordered_set<int> walked;
+    for (const auto h : halfedges) {
+      if (walked.count(h.idx())) continue;
+      Hole piece = hole_through(mesh, h);
+      for (const auto piece_h : piece.halfedges) walked.insert(piece_h.idx());
+      loops.push_back(std::move(piece));
+    }
+  }
+  std::sort(loops.begin(), loops.end(),
+            [](const Hole& a, const Hole& b) { return a.halfedges.front() < b.halfedges.front(); });
+  return as_found(std::move(loops));
+}
+
+std::size_t count_holes(const Mesh& mesh) {
+  std::size_t loops = 0;
+  std::vector<bool> visited(mesh.n_halfedges(), false);
+  const std::size_t limit = mesh.n_halfedges();  // as hole_through bounds a broken loop
+  for (const auto h : mesh.halfedges()) {
+    if (visited[h.idx()] || !mesh.is_boundary(h) || detail::is_deleted(mesh, h)) continue;
+    ++loops;
+    HalfedgeHandle at = h;
+    std::size_t length = 0;
+    do {
+      visited[at.idx()] = true;
+      at = mesh.next_halfedge_handle(at);
+    } while (at != h && ++length <= limit);
+  }
+  return loops;
 }
 
 bool is_boundary_loop(const Mesh& mesh, const Hole& hole) {

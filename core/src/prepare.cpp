@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <utility>
 
 #include "coincident_vertices.h"
@@ -94,10 +95,11 @@ class LoopLines {
 };
 
 // The welded positions whose loops still pass twice through one position (another pair there left
-// apart): those holes could not be filled, and their welds would only leave pinches.
-std::vector<Point> unhelpful_welds(Mesh& mesh, const std::vector<Point>& welded_at) {
-  std::vector<Hole> holes = find_holes(mesh);
-  if (separate_touching_holes(mesh, holes) > 0) holes = find_holes(mesh);
+// apart): those holes could not be filled, and their welds would only leave pinches. `holes` gets
+// the welded mesh's loops (find_separated_holes).
+std::vector<Point> unhelpful_welds(Mesh& mesh, const std::vector<Point>& welded_at,
+                                   std::vector<Hole>& holes) {
+  holes = find_separated_holes(mesh);
   std::vector<Point> unhelpful;
   for (const auto& hole : holes) {
     if (!detail::coincident_vertices(mesh, hole)) continue;
@@ -115,13 +117,18 @@ std::vector<Point> unhelpful_welds(Mesh& mesh, const std::vector<Point>& welded_
 // Welds touching vertices (weld.h) where the holes there can then be filled: a weld whose loop
 // still passes twice through one position is taken back (the mesh welded again from a copy without
 // it), so that no pinch is left that no fill closes. Only meshes with touching vertices pay for the
-// copy.
-WeldReport weld_where_it_helps(Mesh& mesh, double tolerance, unsigned threads) {
+// copy. `holes` gets the mesh's loops (find_separated_holes) when every weld stays.
+WeldReport weld_where_it_helps(Mesh& mesh, double tolerance, unsigned threads,
+                               std::optional<std::vector<Hole>>& holes) {
   if (!has_touching_vertices(mesh, tolerance, threads)) return {};
   Mesh unwelded = mesh;
   WeldReport report = weld_touching_vertices(mesh, tolerance, {}, threads);
-  const std::vector<Point> unhelpful = unhelpful_welds(mesh, report.welded_at);
-  if (unhelpful.empty()) return report;
+  std::vector<Hole> welded_holes;
+  const std::vector<Point> unhelpful = unhelpful_welds(mesh, report.welded_at, welded_holes);
+  if (unhelpful.empty()) {
+    holes = std::move(welded_holes);
+    return report;
+  }
   mesh = std::move(unwelded);
   report = weld_touching_vertices(mesh, tolerance, unhelpful, threads);
   report.positions_left += unhelpful.size();
@@ -171,25 +178,26 @@ void tell_loops(PreparedMesh& prepared, const PrepareOptions& options) {
 
 PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options) {
   PreparedMesh prepared;
+  std::optional<std::vector<Hole>> holes;  // the loops welding found, while the mesh stays so
   if (options.stitch) {
     prepared.stitched = true;
     StitchOptions stitching = options.stitch_options;
     stitching.threads = options.threads;
     prepared.stitch = stitch_borders(mesh, stitching);
     tell_stitching(prepared.stitch, prepared.messages);
-    prepared.weld = weld_where_it_helps(mesh, prepared.stitch.tolerance, options.threads);
+    prepared.weld = weld_where_it_helps(mesh, prepared.stitch.tolerance, options.threads, holes);
     tell_welding(prepared.weld, prepared.messages);
   }
   if (options.remove_pieces_up_to > 0) {
     prepared.removed = remove_small_pieces(mesh, options.remove_pieces_up_to);
+    if (prepared.removed.pieces > 0) holes.reset();
   }
   {  // the pieces' lists (8 bytes a face) are freed before the holes are filled
     const MeshPieces pieces = mesh_pieces(mesh);
     prepared.pieces = {pieces.pieces.size(), pieces.lone_triangles, pieces.small_pieces,
                        pieces.largest_small_piece};
     tell_pieces(prepared, options, prepared.messages);
-    prepared.holes = find_holes(mesh);
-    if (separate_touching_holes(mesh, prepared.holes) > 0) prepared.holes = find_holes(mesh);
+    prepared.holes = holes ? std::move(*holes) : find_separated_holes(mesh);
     prepared.classes = classify_loops(mesh, prepared.holes, pieces);
   }
   prepared.islands = find_islands(mesh, prepared.holes, options.islands);

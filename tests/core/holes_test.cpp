@@ -71,6 +71,18 @@ TEST(Holes, EveryBoundaryHalfedgeLiesOnExactlyOneClosedLoopLargestFirst) {
   }
 }
 
+TEST(Holes, CountHolesIsTheNumberOfLoopsFindHolesGives) {
+  EXPECT_EQ(count_holes(make_icosphere(2)), 0u);
+  std::size_t loops = 0;
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    const Mesh mesh = sphere_with_random_holes(seed);
+    const std::size_t found = find_holes(mesh).size();
+    EXPECT_EQ(count_holes(mesh), found) << "seed " << seed;
+    loops += found;
+  }
+  EXPECT_GT(loops, 8u);
+}
+
 TEST(Holes, SurroundingEdgeLengthIsTheMeanOverEachBoundaryVertexsEdges) {
   const Mesh mesh = sphere_with_random_holes(3);
   for (const Hole& hole : find_holes(mesh)) {

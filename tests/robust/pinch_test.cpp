@@ -171,5 +171,36 @@ TEST_F(PinchedFile, ARingHoleTouchingItselfAtTwoCornersIsClosedAndTheCornersBeco
   EXPECT_NE(report.find("\"pinched_vertices\": "), std::string::npos) << report;
 }
 
+// find_separated_holes, walking again only the loops separation split, gives what find_holes gives
+// after separate_touching_holes: the same loops in the same order, with the same ids, flags and
+// measures; count_holes counts them.
+TEST(PinchedLoops, SeparatedHolesAreWhatFindHolesGivesAfterTheSeparation) {
+  const Mesh meshes[] = {
+      load_mesh_from_memory(obj_text(disk_with_three_gaps_at_its_centre()), "disk.obj"),
+      load_mesh_from_memory(obj_text(ring_with_pinches()), "ring.obj"), bowtie_of_fans()};
+  std::size_t separated_loops = 0;
+  for (const Mesh& mesh : meshes) {
+    EXPECT_EQ(count_holes(mesh), find_holes(mesh).size());
+    Mesh by_hand = mesh;
+    separated_loops += separate_touching_holes(by_hand, find_holes(by_hand));
+    const std::vector<Hole> expected = find_holes(by_hand);
+    Mesh separated = mesh;
+    const std::vector<Hole> holes = find_separated_holes(separated);
+    EXPECT_EQ(count_holes(separated), expected.size());
+    ASSERT_EQ(holes.size(), expected.size());
+    for (std::size_t i = 0; i < holes.size(); ++i) {
+      EXPECT_EQ(holes[i].id, expected[i].id);
+      EXPECT_EQ(holes[i].halfedges, expected[i].halfedges);
+      EXPECT_EQ(holes[i].vertices, expected[i].vertices);
+      EXPECT_EQ(holes[i].pinched, expected[i].pinched);
+      EXPECT_EQ(holes[i].repeated_vertices, expected[i].repeated_vertices);
+      EXPECT_EQ(holes[i].perimeter, expected[i].perimeter);
+      EXPECT_EQ(holes[i].centroid, expected[i].centroid);
+      EXPECT_EQ(holes[i].mean_surrounding_edge_length, expected[i].mean_surrounding_edge_length);
+    }
+  }
+  EXPECT_GE(separated_loops, 2u);  // the disk's gaps at least were separated
+}
+
 }  // namespace
 }  // namespace holefill::testing

@@ -35,8 +35,15 @@ std::vector<Hole> find_holes(const Mesh& mesh);
 // that runs around a fan's own rim (a bowtie of two fans, nothing between them) is left as it
 // is: splitting it there would close each fan on its own back. Only boundary links change (no
 // element is added, removed or moved). `holes` are find_holes(mesh); when this returns more than
-// 0 (the loops added), find the holes again.
+// 0 (the loops added), find the holes again (find_separated_holes does both).
 std::size_t separate_touching_holes(Mesh& mesh, const std::vector<Hole>& holes);
+
+// find_holes, then separate_touching_holes on its loops, and the mesh's loops after that exactly
+// as find_holes would give them (only the loops separation split are walked again).
+std::vector<Hole> find_separated_holes(Mesh& mesh);
+
+// find_holes(mesh).size(), without describing the loops.
+std::size_t count_holes(const Mesh& mesh);
 
 // Whether `hole` is a boundary loop of `mesh` as it is now: each of its halfedges exists, is on
 // the boundary, and runs from its vertex to the next one. False for a hole filled since it was
