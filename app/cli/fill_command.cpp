@@ -49,8 +49,12 @@ FillCounts report_problems(const std::vector<HoleFill>& fills, const std::string
     if (!fill.features_note.empty() && fill.features.continued())
       err << prefix << fill.hole_id << ": " << fill.features_note << "\n";
     if (fill.failed()) {
-      err << prefix << fill.hole_id << " not filled: " << fill.failure.message
-          << (fill.refused_intersections ? "; --allow-intersections keeps it" : "") << "\n";
+      // The core says what went wrong, the command names its own option that helps.
+      const char* remedy = fill.refused_intersections ? "; --allow-intersections keeps it"
+                           : fill.failure.kind == FailureKind::VertexPassedTooOften
+                               ? "; --remove-small-components N removes pieces of at most N faces"
+                               : "";
+      err << prefix << fill.hole_id << " not filled: " << fill.failure.message << remedy << "\n";
     }
   }
   return counts;

@@ -44,8 +44,22 @@ void add_islands_option(CLI::App& command, std::string& choice) {
 PreparedMesh prepare_mesh(Mesh& mesh, const PreparationChoice& choice, const std::string& path,
                           std::ostream& out) {
   PreparedMesh prepared = holefill::prepare_mesh(mesh, choice);
-  for (const auto& line : prepared.messages) out << "holefill: " << path << ": " << line << "\n";
+  const auto flag = [](std::size_t faces) {
+    return "--remove-small-components " + std::to_string(faces);
+  };
+  for (const auto& line : preparation_lines(prepared, flag))
+    out << "holefill: " << path << ": " << line << "\n";
   return prepared;
+}
+
+std::vector<std::string> preparation_lines(
+    const PreparedMesh& prepared, const std::function<std::string(std::size_t)>& control_for) {
+  std::vector<std::string> lines = prepared.messages;
+  if (prepared.pieces_message >= 0) {
+    lines.at(static_cast<std::size_t>(prepared.pieces_message)) +=
+        "; " + control_for(prepared.pieces.largest_small_piece) + " removes them";
+  }
+  return lines;
 }
 
 std::string loop_note(const Hole& hole, const LoopClass& loop_class) {

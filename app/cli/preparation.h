@@ -3,6 +3,8 @@
 // its lines on stderr.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -26,8 +28,15 @@ void add_preparation_options(CLI::App& command, PreparationChoice& choice);
 // `choice` ("on" or "off").
 void add_islands_option(CLI::App& command, std::string& choice);
 
+// prepared.messages with the line about small pieces (PreparedMesh::pieces_message) ended by
+// "; " + `control` + " removes them": the front end's own control, e.g. the command line's
+// "--remove-small-components 4" (what `control_for` makes of pieces.largest_small_piece).
+std::vector<std::string> preparation_lines(
+    const PreparedMesh& prepared, const std::function<std::string(std::size_t)>& control_for);
+
 // Runs holefill::prepare_mesh on `mesh` and writes what it found to `out` (stderr, like the
-// loader's repairs), each line as "holefill: PATH: ...".
+// loader's repairs), each line as "holefill: PATH: ..." (preparation_lines, naming
+// --remove-small-components).
 PreparedMesh prepare_mesh(Mesh& mesh, const PreparationChoice& choice, const std::string& path,
                           std::ostream& out);
 

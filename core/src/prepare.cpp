@@ -57,7 +57,7 @@ void tell_welding(const WeldReport& report, std::vector<std::string>& out) {
   }
 }
 
-void tell_pieces(const PreparedMesh& prepared, const PrepareOptions& options,
+void tell_pieces(PreparedMesh& prepared, const PrepareOptions& options,
                  std::vector<std::string>& out) {
   if (prepared.removed.pieces > 0) {
     out.push_back("removed " + std::to_string(prepared.removed.pieces) + " pieces of at most " +
@@ -67,11 +67,12 @@ void tell_pieces(const PreparedMesh& prepared, const PrepareOptions& options,
   }
   const PieceCounts& p = prepared.pieces;
   if (p.lone_triangles + p.small_pieces == 0) return;
+  // Each front end ends this line with its own control that removes them (pieces_message).
+  prepared.pieces_message = static_cast<int>(out.size());
   out.push_back((p.lone_triangles ? counted(p.lone_triangles, "lone triangle") : "") +
                 (p.lone_triangles && p.small_pieces ? " and " : "") +
                 (p.small_pieces ? counted(p.small_pieces, "small floating piece") : "") +
-                " beside the surface (--remove-small-components " +
-                std::to_string(p.largest_small_piece) + " removes them)");
+                " beside the surface, of at most " + counted(p.largest_small_piece, "face"));
 }
 
 // The lines about loops of one kind: each of the first few, then how many more there are.

@@ -131,8 +131,7 @@ PlannedTriangulation plan_triangulation(const Mesh& mesh, const Hole& hole,
                           std::to_string(seen[busiest]) + " times, more than the " +
                           std::to_string(kMaxVertexPasses) +
                           " a patch is planned for (kMaxVertexPasses): it runs around pieces that "
-                          "meet only there, not around a hole (--remove-small-components removes "
-                          "small pieces)"};
+                          "meet only there, not around a hole"};
     return result;
   }
   if (const auto twins = detail::coincident_vertices(mesh, hole)) {

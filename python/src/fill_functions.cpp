@@ -9,6 +9,7 @@
 #include "holefill/fill.h"
 #include "holefill/holes.h"
 #include "holefill/prepare.h"
+#include "preparation.h"
 #include "python_progress.h"
 #include "report.h"
 
@@ -39,10 +40,15 @@ cancels the same way and is then raised. Out of memory raises MemoryError, the m
 
 std::string with_options(const char* doc) { return doc + options_doc(); }
 
-// The preparation's messages as the command prints them on stderr, without "holefill: ".
+// The preparation's messages as the command prints them on stderr, without "holefill: ", naming
+// the options by their Python names (remove_small_components=N removes small pieces).
 std::string lines_of(const PreparedMesh& prepared, const std::string& name) {
+  const auto option = [](std::size_t faces) {
+    return "remove_small_components=" + std::to_string(faces);
+  };
   std::string text;
-  for (const auto& message : prepared.messages) text += name + ": " + message + "\n";
+  for (const auto& message : cli::preparation_lines(prepared, option))
+    text += name + ": " + python_message(message) + "\n";
   return text;
 }
 

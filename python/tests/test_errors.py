@@ -68,3 +68,19 @@ def test_a_format_that_cannot_hold_an_attribute_warns(tmp_path):
     mesh = holefill.load(colored)
     with pytest.warns(holefill.HolefillWarning, match="not written"):
         mesh.save(tmp_path / "out.stl")
+
+
+def test_the_preparations_advice_names_the_python_option():
+    # A closed tetrahedron and a lone triangle beside it: the warning about the triangle names
+    # fill's option as Python spells it, not the command's flag.
+    vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [5, 0, 0], [6, 0, 0], [5, 1, 0]]
+    faces = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2], [4, 5, 6]]
+    mesh = holefill.Mesh(vertices, faces)
+    with pytest.warns(holefill.HolefillWarning) as warnings:
+        holefill.fill(mesh)
+    texts = [str(w.message) for w in warnings]
+    assert any("1 lone triangle beside the surface, of at most 1 face; "
+               "remove_small_components=1 removes them" in text for text in texts), texts
+    assert not any("--" in text for text in texts), texts
+    holefill.fill(mesh, remove_small_components=1)
+    assert mesh.n_faces == 4

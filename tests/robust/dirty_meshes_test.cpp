@@ -180,8 +180,8 @@ TEST_F(Dirty, LoneTrianglesAndSmallPiecesAreToldApartAndRemovedOnRequest) {
                            {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}}});
   Filled f = fill(soup);
   EXPECT_EQ(problems(f), "");
-  EXPECT_NE(f.cli.err.find("3 lone triangles and 1 small floating piece beside the surface "
-                           "(--remove-small-components 4 removes them)"),
+  EXPECT_NE(f.cli.err.find("3 lone triangles and 1 small floating piece beside the surface, of "
+                           "at most 4 faces; --remove-small-components 4 removes them"),
             std::string::npos)
       << f.cli.err;
   EXPECT_EQ(find_holes(f.after).size(), 4u);  // the triangles' rims (not holes) and the strip's
@@ -198,6 +198,27 @@ TEST_F(Dirty, LoneTrianglesAndSmallPiecesAreToldApartAndRemovedOnRequest) {
       << f.cli.err;
   EXPECT_TRUE(find_holes(f.after).empty());
   EXPECT_EQ(mesh_pieces(f.after).pieces.size(), 1u);
+}
+
+TEST_F(Dirty, ALoopThroughOneVertexTooOftenNamesTheFlagThatRemovesSmallPieces) {
+  // 20 lone triangles around one vertex: one loop through it 20 times, refused (the core's
+  // kMaxVertexPasses is 16); the core says why, the command adds its own flag.
+  Mesh fan;
+  const VertexHandle centre = fan.add_vertex(Point(0.0, 0.0, 0.0));
+  for (int i = 0; i < 20; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / 20, b = 2.0 * std::numbers::pi * (i + 0.5) / 20;
+    const VertexHandle p = fan.add_vertex(Point(std::cos(a), std::sin(a), 0.01 * (i % 7)));
+    const VertexHandle q = fan.add_vertex(Point(std::cos(b), std::sin(b), 0.01 * (i % 5)));
+    fan.add_face(centre, p, q);
+  }
+  save_mesh(fan, path("fan.obj"));
+  const CliRun run = run_cli({"fill", path("fan.obj"), "-o", path("out.obj")});
+  EXPECT_EQ(run.code, cli::kSomeHolesNotFilled) << run.err;
+  EXPECT_NE(run.err.find("times, more than the 16 a patch is planned for (kMaxVertexPasses): it "
+                         "runs around pieces that meet only there, not around a hole; "
+                         "--remove-small-components N removes pieces of at most N faces"),
+            std::string::npos)
+      << run.err;
 }
 
 TEST_F(Dirty, ASphereCutIntoPiecesWithHairlineCracksIsStitchedAndItsHoleFilled) {

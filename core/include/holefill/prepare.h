@@ -60,6 +60,11 @@ struct PreparedMesh {
   // What the steps did and found, one line each, for the user (no file name, no newline). Runs of
   // lines of one kind are summarised past a few, so a million lone triangles give a few lines.
   std::vector<std::string> messages;
+  // The index in `messages` of the line about the lone triangles and small pieces left beside
+  // the surface (-1: none), which names no control: each front end ends it with its own that
+  // removes them (the command line's --remove-small-components N, N = pieces.largest_small_piece;
+  // PrepareOptions::remove_pieces_up_to).
+  int pieces_message = -1;
 };
 
 // Runs the steps on `mesh` in the order above. Expects a mesh without deleted elements (as
