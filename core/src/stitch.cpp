@@ -58,35 +58,28 @@ FlatLists flat_lists(std::size_t keys, const std::vector<std::pair<int, int>>& p
 
 // For each point, the points within `tolerance` of it (itself included), as point indices; a
 // point with more than kMostPointsWithin such points is crowded (`crowded` says so) and lists
-// only itself. Only the nearest kMostPointsWithin + 1 are looked for: a tolerance far above the
-// edge length (1e10 on a grid of face-by-face squares) listed every point for every point, 154 s
-// and 19 GB for 60,000 faces.
+// only itself. The search stops at the kMostPointsWithin + 1st: a tolerance far above the edge
+// length (1e10 on a grid of face-by-face squares) listed every point for every point, 154 s and
+// 19 GB for 60,000 faces.
 FlatLists points_within(const detail::BoundaryIndex& index, double tolerance,
                         std::vector<char>& crowded, unsigned threads) {
   const BoundaryPoints& points = index.points;
   const std::size_t n = points.vertices.size();
-  const std::size_t most = std::min(n, kMostPointsWithin + 1);
   crowded.assign(n, 0);
   // The points in blocks on `threads` threads, each block's pairs in its points' order, the
   // blocks then joined in order: the lists of one thread.
   constexpr std::size_t kBlock = std::size_t{1} << 13;
   std::vector<std::vector<std::pair<int, int>>> block_pairs((n + kBlock - 1) / kBlock);
   detail::for_each_index(block_pairs.size(), threads, [&](std::size_t block) {
-    std::vector<std::size_t> nearest(most);
-    std::vector<double> squared(most);
+    std::vector<std::size_t> found;
     std::vector<int> within;
     auto& pairs = block_pairs[block];
     for (std::size_t s = block * kBlock; s < std::min(n, (block + 1) * kBlock); ++s) {
       const Point& at = points.mesh.point(points.vertices[s]);
-      const std::size_t found =
-          index.tree.knnSearch(at.data(), most, nearest.data(), squared.data());
       within.clear();
-      for (std::size_t k = 0; k < found; ++k) {
-        if ((points.mesh.point(points.vertices[nearest[k]]) - at).norm() <= tolerance) {
-          within.push_back(static_cast<int>(nearest[k]));
-        }
-      }
-      if (within.size() > kMostPointsWithin) {
+      if (detail::points_within_tolerance(index, at, tolerance, kMostPointsWithin, found)) {
+        for (const std::size_t k : found) within.push_back(static_cast<int>(k));
+      } else {
         crowded[s] = 1;
         within.assign(1, static_cast<int>(s));
       }

@@ -63,28 +63,23 @@ std::vector<std::vector<VertexHandle>> touching_groups(const Mesh& mesh, double 
   if (points.vertices.size() < 2) return {};
   // The pairs within the tolerance, found in blocks of points on `threads` threads (0: every
   // core) and taken in the points' order, so that the groups are those of one thread.
-  const std::size_t most = std::min(points.vertices.size(), kMostAtOnePosition + 1);
   constexpr std::size_t kBlock = std::size_t{1} << 13;
   const std::size_t n = points.vertices.size();
   std::vector<std::vector<std::pair<VertexHandle, VertexHandle>>> block_pairs((n + kBlock - 1) /
                                                                               kBlock);
   detail::for_each_index(
       block_pairs.size(), threads ? threads : detail::available_cores(), [&](std::size_t block) {
-        std::vector<std::size_t> nearest(most);
-        std::vector<double> squared(most);
+        std::vector<std::size_t> within;
         for (std::size_t s = block * kBlock; s < std::min(n, (block + 1) * kBlock); ++s) {
           const VertexHandle a = points.vertices[s];
-          const std::size_t found =
-              index.tree.knnSearch(mesh.point(a).data(), most, nearest.data(), squared.data());
-          const auto within = [&](std::size_t k) {
-            return (mesh.point(points.vertices[nearest[k]]) - mesh.point(a)).norm() <= tolerance;
-          };
           // Crowded: more than a few points within the tolerance (a tolerance far above the edge
           // length) is no place where holes touch; it is left apart.
-          if (found > kMostAtOnePosition && within(kMostAtOnePosition)) continue;
-          for (std::size_t k = 0; k < found; ++k) {
-            if (!within(k)) continue;
-            const VertexHandle b = points.vertices[nearest[k]];
+          if (!detail::points_within_tolerance(index, mesh.point(a), tolerance, kMostAtOnePosition,
+                                               within)) {
+            continue;
+          }
+          for (const std::size_t k : within) {
+            const VertexHandle b = points.vertices[k];
             if (b.idx() <= a.idx() || mesh.find_halfedge(a, b).is_valid()) continue;
             block_pairs[block].emplace_back(a, b);
           }
