@@ -151,7 +151,10 @@ std::vector<Hole> find_holes(const Mesh& mesh) {
 // are kept as found, and those are walked again from their lowest halfedges, as the scan of
 // find_holes would meet them.
 std::vector<Hole> find_separated_holes(Mesh& mesh) {
-  std::vector<Hole> holes = find_holes(mesh);
+  return separated_holes(mesh, find_holes(mesh));
+}
+
+std::vector<Hole> separated_holes(Mesh& mesh, std::vector<Hole> holes) {
   if (separate_touching_holes(mesh, holes) == 0) return holes;
   std::vector<Hole> loops;
   for (Hole& hole : holes) {

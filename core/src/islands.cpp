@@ -290,12 +290,17 @@ void assign(IslandMap& map, const std::vector<Loop>& loops, int island,
 
 IslandMap find_islands(const Mesh& mesh, const std::vector<Hole>& holes,
                        const IslandOptions& options) {
+  const bool search = options.detect && holes.size() >= 2;
+  return find_islands(mesh, holes, options, search ? component_labels(mesh) : std::vector<int>{});
+}
+
+IslandMap find_islands(const Mesh& mesh, const std::vector<Hole>& holes,
+                       const IslandOptions& options, const std::vector<int>& component) {
   IslandMap map;
   map.islands.resize(holes.size());
   map.outer.assign(holes.size(), -1);
   map.note.resize(holes.size());
   if (!options.detect || holes.size() < 2) return map;
-  const std::vector<int> component = component_labels(mesh);
   std::vector<Loop> loops;
   for (const auto& hole : holes) {
     Loop loop{&hole, loop_points(mesh, hole), {}, component[hole.vertices[0].idx()]};

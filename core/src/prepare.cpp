@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "coincident_vertices.h"
+#include "holefill/stats.h"
+#include "io/two_threads.h"
 
 namespace holefill {
 namespace {
@@ -175,6 +177,12 @@ void tell_loops(PreparedMesh& prepared, const PrepareOptions& options) {
   borders.flush(prepared.messages);
 }
 
+// Whether preparing `mesh` on `threads` threads (0: every core of the process) runs independent
+// walks side by side: on a mesh big enough that a thread costs less than it saves.
+bool two_threads(const Mesh& mesh, unsigned threads) {
+  return threads != 1 && io::use_two_threads(mesh.n_faces(), io::kTwoThreadsFrom);
+}
+
 }  // namespace
 
 PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options) {
@@ -193,15 +201,29 @@ PreparedMesh prepare_mesh(Mesh& mesh, const PrepareOptions& options) {
     prepared.removed = remove_small_pieces(mesh, options.remove_pieces_up_to);
     if (prepared.removed.pieces > 0) holes.reset();
   }
+  std::vector<int> component;  // component_labels, for the islands
+  const bool separated = holes.has_value();
   {  // the pieces' lists (8 bytes a face) are freed before the holes are filled
-    const MeshPieces pieces = mesh_pieces(mesh);
+    MeshPieces pieces;
+    // Three walks that only read the mesh, the pieces beside the other two.
+    io::run_both(
+        two_threads(mesh, options.threads), [&] { pieces = mesh_pieces(mesh); },
+        [&] {
+          if (!holes) holes = find_holes(mesh);
+          if (options.islands.detect && holes->size() >= 2) component = component_labels(mesh);
+        });
     prepared.pieces = {pieces.pieces.size(), pieces.lone_triangles, pieces.small_pieces,
                        pieces.largest_small_piece};
     tell_pieces(prepared, options, prepared.messages);
-    prepared.holes = holes ? std::move(*holes) : find_separated_holes(mesh);
+    // Separating touching loops only relinks boundaries: the pieces and components stay.
+    prepared.holes = separated ? std::move(*holes) : separated_holes(mesh, std::move(*holes));
     prepared.classes = classify_loops(mesh, prepared.holes, pieces);
   }
-  prepared.islands = find_islands(mesh, prepared.holes, options.islands);
+  // One loop separated into several: their islands are looked for too.
+  if (component.empty() && options.islands.detect && prepared.holes.size() >= 2) {
+    component = component_labels(mesh);
+  }
+  prepared.islands = find_islands(mesh, prepared.holes, options.islands, component);
   tell_loops(prepared, options);
   return prepared;
 }

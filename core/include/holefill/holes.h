@@ -41,6 +41,8 @@ std::size_t separate_touching_holes(Mesh& mesh, const std::vector<Hole>& holes);
 // find_holes, then separate_touching_holes on its loops, and the mesh's loops after that exactly
 // as find_holes would give them (only the loops separation split are walked again).
 std::vector<Hole> find_separated_holes(Mesh& mesh);
+// find_separated_holes where `holes` are find_holes(mesh), found already (beside other work).
+std::vector<Hole> separated_holes(Mesh& mesh, std::vector<Hole> holes);
 
 // find_holes(mesh).size(), without describing the loops.
 std::size_t count_holes(const Mesh& mesh);

@@ -46,5 +46,9 @@ struct IslandMap {
 // The islands among `holes` (find_holes(mesh)). With options.detect false, none.
 IslandMap find_islands(const Mesh& mesh, const std::vector<Hole>& holes,
                        const IslandOptions& options = {});
+// find_islands where `component` is component_labels(mesh) (stats.h), found already (beside
+// other work); unused when options.detect is false or there are fewer than two holes.
+IslandMap find_islands(const Mesh& mesh, const std::vector<Hole>& holes,
+                       const IslandOptions& options, const std::vector<int>& component);
 
 }  // namespace holefill
