@@ -11,6 +11,7 @@
 #include <sstream>
 #include <thread>
 
+#include "holefill/cores.h"
 #include "holefill/errors.h"
 #include "holefill/mesh_format.h"
 #include "outputs.h"
@@ -79,10 +80,11 @@ std::vector<BatchFile> plan_batch(const FillArguments& a) {
   return files;
 }
 
-// Fills one mesh as `holefill fill -q INPUT -o OUTPUT --report -` would, its report and stderr
-// kept.
-void fill_one(const FillArguments& batch, BatchFile& file, std::istream& in) {
+// Fills one mesh as `holefill fill -q INPUT -o OUTPUT --report - --threads THREADS` would, its
+// report and stderr kept.
+void fill_one(const FillArguments& batch, unsigned threads, BatchFile& file, std::istream& in) {
   FillArguments a = batch;
+  a.options.threads = a.preparation.threads = threads;
   a.input = file.input;
   a.output = file.output;
   a.report_path = "-";
@@ -160,6 +162,10 @@ std::string batch_report(const std::vector<BatchFile>& files, int worst) {
 
 }  // namespace
 
+unsigned threads_per_mesh(unsigned threads, unsigned jobs, unsigned cores) {
+  return threads ? threads : std::max(1u, cores / std::max(1u, jobs));
+}
+
 bool is_batch(const FillArguments& a) {
   std::error_code error;
   return a.inputs.size() > 1 || (!a.output.empty() && a.output.back() == '/') ||
@@ -181,17 +187,19 @@ int run_batch(const FillArguments& a, const Streams& streams) {
       if (streams.verbosity != Verbosity::Quiet) streams.out << file_line(files[printed]);
     }
   };
+  const unsigned cores = available_cores();
+  const auto jobs =
+      static_cast<unsigned>(std::min<std::size_t>(a.jobs ? a.jobs : cores, files.size()));
+  const unsigned threads = threads_per_mesh(a.options.threads, jobs, cores);
   std::atomic<std::size_t> next{0};
   const auto worker = [&] {
     for (std::size_t i = next++; i < files.size(); i = next++) {
-      fill_one(a, files[i], streams.in);
+      fill_one(a, threads, files[i], streams.in);
       finished(i);
     }
   };
-  const unsigned jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::min<std::size_t>(jobs, files.size()); ++t)
-    pool.emplace_back(worker);
+  for (unsigned t = 1; t < jobs; ++t) pool.emplace_back(worker);
   worker();
   for (auto& thread : pool) thread.join();
 

@@ -54,6 +54,7 @@ struct CommandLine {
     add_preparation_options(*info, info_arguments.preparation);
     add_islands_option(*info, info_arguments.islands);
     add_feature_angle_option(*info, info_arguments.features);
+    add_threads_option(*info, info_arguments.threads, "read and prepare the mesh");
     fill = app.add_subcommand("fill", "fill holes, write the result, print a table");
     add_fill_options(*fill, fill_arguments);
     help = app.add_subcommand("help", "this text, or a command's options");

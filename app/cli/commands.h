@@ -35,6 +35,7 @@ struct InfoArguments {
   PreparationChoice preparation;  // stitching, small pieces, borders (islands from `islands`)
   std::string islands = "on";     // --islands: "off" skips island detection
   FeatureOptions features;        // which sharp features entering a hole are listed
+  unsigned threads = 0;           // --threads: reading and preparing (0: every core)
 };
 
 int run_info(const InfoArguments& arguments, const Streams& streams);

@@ -119,12 +119,7 @@ void add_selection_options(CLI::App& command, FillArguments& a) {
       ->default_str("");
   command.add_option("--stage", a.stage, "stop after this stage")
       ->check(CLI::IsMember(names(kStages)));
-  command
-      .add_option("--threads", a.options.threads,
-                  "threads that read, prepare and fill the mesh (0: every core\n"
-                  "this process may run on); the output is the same whatever\n"
-                  "the number")
-      ->transform(whole_number(0, 4096));
+  add_threads_option(command, a.options.threads, "read, prepare and fill the mesh");
   command.add_flag("--allow-intersections", a.options.allow_intersections,
                    "keep a hole's best patch even when it intersects the mesh\n"
                    "(exit 5); by default such a hole is left open (exit 1)");
@@ -138,6 +133,16 @@ void add_feature_angle_option(CLI::App& command, FeatureOptions& features) {
                   "continue sharp edges (faces meeting at more than this many\n"
                   "degrees) through holes: creases and corners; 0: off")
       ->check(real_number(0.0, 180.0));
+}
+
+void add_threads_option(CLI::App& command, unsigned& threads, const std::string& work) {
+  command
+      .add_option("--threads", threads,
+                  "threads that " + work +
+                      " (0: every core\n"
+                      "this process may run on); the output is the same whatever\n"
+                      "the number")
+      ->transform(whole_number(0, 4096));
 }
 
 void add_format_option(CLI::App& command, std::string& format) {
@@ -158,7 +163,10 @@ void add_fill_options(CLI::App& command, FillArguments& a) {
                   "or a folder (ending in /) for several meshes")
       ->required();
   command
-      .add_option("-j,--jobs", a.jobs, "several meshes: how many to fill at once (0: one per core)")
+      .add_option("-j,--jobs", a.jobs,
+                  "several meshes: how many to fill at once (0: one per core),\n"
+                  "each on --threads threads (0: the cores shared among them,\n"
+                  "at least one each)")
       ->transform(whole_number(0, 1024));
   add_format_option(command, a.format);
   command.add_option("--report", a.report_path,

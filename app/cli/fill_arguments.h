@@ -55,6 +55,9 @@ std::vector<OptionHelp> fill_choice_help();
 // Adds --feature-angle (features.h), the dihedral angle above which an edge is a feature.
 void add_feature_angle_option(CLI::App& command, FeatureOptions& features);
 
+// Adds --threads: how many threads do `work` ("read and prepare the mesh"), 0 every core.
+void add_threads_option(CLI::App& command, unsigned& threads, const std::string& work);
+
 // Adds --format, the format of a mesh read from standard input or written to standard output.
 void add_format_option(CLI::App& command, std::string& format);
 

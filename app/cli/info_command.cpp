@@ -35,9 +35,10 @@ std::string joined_note(const std::string& first, const std::string& second) {
 }  // namespace
 
 int run_info(const InfoArguments& a, const Streams& streams) {
-  Mesh mesh = load_and_warn(a.input, a.format, streams);
+  Mesh mesh = load_and_warn(a.input, a.format, streams, a.threads);
   PreparationChoice choice = a.preparation;
   choice.islands.detect = a.islands == "on";
+  choice.threads = a.threads;
   const PreparedMesh prepared = prepare_mesh(mesh, choice, a.input, streams.err);
   const auto& holes = prepared.holes;
   std::ostream& out = streams.out;

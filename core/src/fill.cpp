@@ -344,6 +344,14 @@ void require_boundary_loops(const Mesh& mesh, const std::vector<const Hole*>& lo
 
 // Loops joined by bridges are triangulated with constraints of their own (bridge.h), which the
 // intersection avoidance's solves would not keep: their plan stays as it is.
+// One group filled alone (advance, fill_hole): a number of threads asked for bounds its dynamic
+// program too, as fill_groups bounds each group's.
+FillOptions with_threads_alone(FillOptions options) {
+  if (options.threads && !options.triangulate.threads)
+    options.triangulate.threads = options.threads;
+  return options;
+}
+
 FillOptions without_avoidance(FillOptions options) {
   options.avoid_intersections = false;
   return options;
@@ -375,8 +383,9 @@ StageRun advance(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOptions
 
 HoleFill fill_hole(Mesh& mesh, const Hole& hole, const FillOptions& options) {
   require_boundary_loops(mesh, {&hole});
-  auto [fill, scaled] = at_safe_scale(
-      mesh, [&] { return detail::fill_planned(mesh, hole, options, nullptr, nullptr); });
+  auto [fill, scaled] = at_safe_scale(mesh, [&] {
+    return detail::fill_planned(mesh, hole, with_threads_alone(options), nullptr, nullptr);
+  });
   if (scaled) measure_again(mesh, fill);
   return fill;
 }
@@ -400,7 +409,8 @@ StageRun advance_joined(Mesh& mesh, const std::vector<const Hole*>& loops, HoleF
 }
 
 StageRun detail::advance_unscaled(Mesh& mesh, const std::vector<const Hole*>& loops, HoleFill& fill,
-                                  const FillOptions& options, const MeshFaceIndex* index) {
+                                  const FillOptions& given, const MeshFaceIndex* index) {
+  const FillOptions options = with_threads_alone(given);
   if (loops.size() == 1) return advance_with(mesh, *loops.front(), fill, options, nullptr, index);
   StageRun advanced;
   if (fill.stage() != Stage::Original || fill.failed()) {

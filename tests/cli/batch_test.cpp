@@ -1,8 +1,12 @@
 // holefill fill over many meshes at once: a line per mesh and a total, the worst mesh's exit
 // code, broken meshes beside good ones, and outputs byte for byte those of one fill per mesh.
+#include <algorithm>
 #include <nlohmann/json.hpp>
+#include <utility>
 
+#include "batch_command.h"
 #include "cli_test_util.h"
+#include "holefill/cores.h"
 
 namespace holefill {
 namespace {
@@ -87,6 +91,42 @@ TEST_F(Batch, TheWorstCodeIsTheMostSevereNotTheLargest) {
   const CliRun mixed = run_cli({"fill", inputs[0], inputs[3], "-o", in_dir("out2")});
   EXPECT_NE(mixed.out.find("(exit 4)"), std::string::npos) << mixed.out << mixed.err;
   EXPECT_EQ(mixed.code, cli::kBadInput) << mixed.out << mixed.err;
+}
+
+TEST_F(Batch, EachMeshGetsItsShareOfTheCoresUnlessThreadsAreGiven) {
+  // The split: cores / jobs, at least one; --threads as given.
+  EXPECT_EQ(cli::threads_per_mesh(0, 4, 16), 4u);
+  EXPECT_EQ(cli::threads_per_mesh(0, 3, 16), 5u);
+  EXPECT_EQ(cli::threads_per_mesh(0, 16, 16), 1u);
+  EXPECT_EQ(cli::threads_per_mesh(0, 1, 16), 16u);
+  EXPECT_EQ(cli::threads_per_mesh(0, 8, 2), 1u);
+  EXPECT_EQ(cli::threads_per_mesh(5, 4, 16), 5u);
+  // It reaches each mesh's fill (its report's options), and the outputs are the same whatever
+  // the split: one mesh at a time on every core, three at once on a share, one thread each.
+  const auto inputs = make_inputs();
+  const std::vector<std::string> good(inputs.begin(), inputs.begin() + 3);
+  const unsigned cores = available_cores();
+  const std::vector<std::pair<std::vector<std::string>, unsigned>> runs{
+      {{"-j", "1"}, cores},
+      {{"-j", "3"}, std::max(1u, cores / 3)},
+      {{"-j", "3", "--threads", "1"}, 1u},
+      {{}, std::max(1u, cores / std::min(cores, 3u))}};  // -j: one per core, at most one per mesh
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const std::string out = in_dir("out" + std::to_string(r));
+    std::vector<std::string> args{"fill", "-q"};
+    args.insert(args.end(), good.begin(), good.end());
+    args.insert(args.end(), {"-o", out + "/", "--report", out + ".json"});
+    args.insert(args.end(), runs[r].first.begin(), runs[r].first.end());
+    const CliRun run = run_cli(args);
+    ASSERT_EQ(run.code, cli::kOk) << run.err;
+    const auto report = nlohmann::json::parse(read_text(out + ".json"));
+    for (const auto& mesh : report["meshes"]) {
+      EXPECT_EQ(mesh["report"]["options"]["threads"], runs[r].second) << r;
+    }
+    for (const char* name : {"bunny.obj", "torus.obj", "sphere.obj"}) {
+      EXPECT_EQ(read_text(fs::path(out) / name), read_text(dir_ / "out0" / name)) << r << name;
+    }
+  }
 }
 
 TEST_F(Batch, TwoMeshesOfOneNameAreRefusedBeforeAnyWork) {

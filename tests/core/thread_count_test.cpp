@@ -4,16 +4,21 @@
 // this process may run on.
 #include <gtest/gtest.h>
 #include <sched.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "holefill/fill.h"
+#include "holefill/holes.h"
 #include "holefill/io.h"
 #include "holefill/prepare.h"
 #include "holefill/triangulate.h"
+#include "run_cli.h"
 #include "test_meshes.h"
 #include "thread_counter.h"
 
@@ -91,6 +96,56 @@ TEST(ThreadCount, OneThreadStartsNoThreadInLoadingPreparingOrFilling) {
   // Stitching joined the rows and the holes were closed: the work was done.
   const Mesh mesh = load_mesh_from_memory(one, "one.obj");
   EXPECT_TRUE(find_holes(mesh).size() == 1u);  // the grid's outer border only
+}
+
+TEST(ThreadCount, AHoleFilledAloneIsPlannedOnTheThreadsGiven) {
+  // A hole of about 160 edges in a wavy grid.
+  const Mesh grid = without_faces(
+      make_grid(100,
+                [](double x, double y) { return 0.05 * std::sin(3.0 * x) * std::cos(2.0 * y); }),
+      [](const Point& c) { return std::abs(c[0] - 0.5) < 0.2 && std::abs(c[1] - 0.5) < 0.2; });
+  const auto holes = find_holes(grid);
+  const auto hole = std::min_element(
+      holes.begin(), holes.end(), [](const Hole& a, const Hole& b) { return a.size() < b.size(); });
+  ASSERT_GT(hole->size(), 120u);  // the full search's threshold for threads
+  FillOptions options;
+  options.last_stage = Stage::Triangulated;
+  const auto filled_alone = [&](unsigned threads, bool stepped) {
+    options.threads = threads;
+    Mesh mesh = grid;
+    reset_thread_counts();
+    if (stepped) {
+      HoleFill fill;
+      EXPECT_EQ(advance(mesh, *hole, fill, options), StageRun::Ran);
+    } else {
+      EXPECT_FALSE(fill_hole(mesh, *hole, options).failed());
+    }
+    return mesh_to_bytes(mesh, "filled.obj");
+  };
+  for (const bool stepped : {true, false}) {
+    const std::string one = filled_alone(1, stepped);
+    EXPECT_EQ(thread_counts().started, 0u) << stepped;
+    EXPECT_EQ(filled_alone(2, stepped), one) << stepped;
+    EXPECT_LE(thread_counts().most_at_once, 1u) << stepped;
+  }
+}
+
+TEST(ThreadCount, InfoReadsAndPreparesOnTheThreadsGiven) {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                     ("holefill-info-threads-" + std::to_string(getpid()) + ".obj");
+  std::ofstream(path, std::ios::binary) << rows_apart_obj(280);
+  reset_thread_counts();
+  const CliRun one = run_cli({"info", path.string(), "--threads", "1"});
+  EXPECT_EQ(thread_counts().started, 0u);
+  reset_thread_counts();
+  const CliRun three = run_cli({"info", path.string(), "--threads", "3"});
+  EXPECT_GT(thread_counts().started, 0u);  // reading halves, stitching's search
+  EXPECT_LE(thread_counts().most_at_once, 2u);
+  std::filesystem::remove(path);
+  EXPECT_EQ(one.code, 0) << one.err;
+  EXPECT_EQ(one.out, three.out);
+  // 7 x 7 small holes but the one inside the big hole, the big hole, the grid's border.
+  EXPECT_NE(one.out.find(" 50 holes\n"), std::string::npos) << one.out;
 }
 
 TEST(ThreadCount, TheFullSearchLeftToChooseUsesEveryCoreOfTheProcess) {

@@ -41,8 +41,9 @@ struct FillOptions {
   // patch anyway, its intersections counted in HoleFill::self_intersections.
   bool allow_intersections = false;
   // Threads that plan holes at once (each hole's dynamic program on one of them, or, with fewer
-  // holes than threads, a large hole's program on several). 0: every core this process may run
-  // on (its affinity mask). The result is the same whatever the number.
+  // holes than threads, a large hole's program on several; a hole filled alone, by advance,
+  // advance_joined, fill_hole or a FillSequence, its program on up to this many). 0: every core
+  // this process may run on (its affinity mask). The result is the same whatever the number.
   unsigned threads = 0;
   bool operator==(const FillOptions&) const = default;
 };
