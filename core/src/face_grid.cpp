@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "merge_on_threads.h"
+#include "parallel_indices.h"
+
 namespace holefill::detail {
 namespace {
 
@@ -10,6 +13,8 @@ namespace {
 constexpr double kMaxCellsPerFace = 64, kMaxCellsPerLookup = 1 << 20;
 // Cell indices are clamped to this range, so that they fit in 64 bits whatever the coordinates.
 constexpr double kMaxCellIndex = 1e15;
+// Entries below this many per thread are filed on fewer threads: starting one costs more.
+constexpr std::size_t kEntriesPerChunk = 8192;
 
 }  // namespace
 
@@ -45,7 +50,8 @@ Box box_of(const Mesh& mesh, FaceHandle face) {
   return box;
 }
 
-FaceGrid::FaceGrid(std::vector<std::pair<int, Box>> boxes) : entries_(std::move(boxes)) {
+FaceGrid::FaceGrid(std::vector<std::pair<int, Box>> boxes, unsigned threads)
+    : entries_(std::move(boxes)) {
   // The mean extent, accumulated so that it cannot overflow; infinite extents are left out.
   double mean_extent = 0.0;
   std::size_t counted = 0;
@@ -56,15 +62,28 @@ FaceGrid::FaceGrid(std::vector<std::pair<int, Box>> boxes) : entries_(std::move(
   }
   const double cell = 2.0 * mean_extent;
   cell_ = std::isfinite(cell) && cell > 0.0 ? cell : 1.0;
-  for (std::size_t e = 0; e < entries_.size(); ++e) {
-    const auto range = cell_span(entries_[e].second, cell_);
-    if (!range || !(range->count <= kMaxCellsPerFace)) {
-      unfiled_.push_back(e);
-      continue;
+  // The entries in consecutive chunks, one per thread: each chunk's cells listed and sorted on
+  // its thread, the sorted runs merged (the same array on any number of threads: no two pairs
+  // are equal), the chunks' unfiled entries joined in order.
+  const std::size_t count = entries_.size();
+  const std::size_t chunks =
+      threads < 2 ? 1 : std::clamp<std::size_t>(count / kEntriesPerChunk, 1, threads);
+  std::vector<std::vector<std::pair<std::uint64_t, std::size_t>>> runs(chunks);
+  std::vector<std::vector<std::size_t>> unfiled(chunks);
+  for_each_index(chunks, threads, [&](std::size_t chunk) {
+    auto& run = runs[chunk];
+    for (std::size_t e = count * chunk / chunks; e < count * (chunk + 1) / chunks; ++e) {
+      const auto range = cell_span(entries_[e].second, cell_);
+      if (!range || !(range->count <= kMaxCellsPerFace)) {
+        unfiled[chunk].push_back(e);
+        continue;
+      }
+      for_each_cell_key(*range, [&](std::uint64_t key) { run.emplace_back(key, e); });
     }
-    for_each_cell_key(*range, [&](std::uint64_t key) { cells_.emplace_back(key, e); });
-  }
-  std::sort(cells_.begin(), cells_.end());
+    std::sort(run.begin(), run.end());
+  });
+  for (const auto& chunk : unfiled) unfiled_.insert(unfiled_.end(), chunk.begin(), chunk.end());
+  cells_ = merge_runs(std::move(runs), threads);
 }
 
 std::vector<int> FaceGrid::near(const Box& box) const {

@@ -67,7 +67,8 @@ void for_each_cell_key(const CellSpan& span, const Visit& visit) {
 class FaceGrid {
  public:
   // Files each (id, box) under the cells its box touches; cells are twice the boxes' mean extent.
-  explicit FaceGrid(std::vector<std::pair<int, Box>> boxes);
+  // On up to `threads` threads, the same grid on any number.
+  explicit FaceGrid(std::vector<std::pair<int, Box>> boxes, unsigned threads = 1);
 
   // The ids of the entries whose boxes overlap `box`, ascending, each once.
   std::vector<int> near(const Box& box) const;

@@ -309,7 +309,7 @@ StageRun advance_with(Mesh& mesh, const Hole& hole, HoleFill& fill, const FillOp
   }
   // Colours, normals, UVs, materials ... of the new elements.
   fill.attributes_note = interpolate_patch_attributes(mesh, fill.patch);
-  fill.stats = patch_stats(mesh, fill.patch);
+  fill.stats = patch_stats(mesh, fill.patch, index ? index->threads() : 1);
   return StageRun::Ran;
 }
 

@@ -226,7 +226,7 @@ void MeshFaceIndex::file_faces_near(std::vector<Box> regions, unsigned threads,
     std::vector<std::pair<int, Box>>().swap(block);
   }
   part.faces = boxes.size();
-  part.grid = FaceGrid(std::move(boxes));
+  part.grid = FaceGrid(std::move(boxes), threads);
   parts_.push_back(std::move(part));
 }
 

@@ -20,8 +20,10 @@ double scale_for(double magnitude) {
   return std::ldexp(1.0, -std::clamp(std::ilogb(magnitude), -1000, 1000));
 }
 
-// Patch triangles scanned by one task when a large patch is checked on several threads.
+// Patch triangles scanned by one task when a large patch is checked on several threads; faces
+// gathered or scaled by one task before.
 constexpr int kTrianglesPerBlock = 4096;
+constexpr std::size_t kFacesPerBlock = 16384;
 
 Box box_of_corners(const std::array<Point, 3>& corners) {
   Box box;
@@ -39,6 +41,90 @@ bool stop_at(std::size_t i, const Progress* progress) {
 
 }  // namespace
 
+namespace {
+
+// What a patch's triangles are compared with: the patch's triangles first, then the faces of the
+// mesh near them, with their boxes and their triangles scaled for the floating-point test.
+struct Candidates {
+  std::vector<FaceHandle> faces;  // of the mesh's faces (after the patch's triangles)
+  std::vector<std::pair<int, Box>> boxes;
+  std::vector<std::optional<Triangle3>> scaled;
+};
+
+std::size_t blocks_of(std::size_t count, std::size_t per_block) {
+  return (count + per_block - 1) / per_block;
+}
+
+// The candidates, gathered and scaled in blocks on `threads` threads, in order (the same on any
+// number); nothing when `progress` was cancelled meanwhile. The arrays are sized before they are
+// filled (counted first, then written at each block's place), and the mesh faces' corners read
+// again rather than kept: after each stage of a large hole they hold hundreds of thousands of
+// entries, and on this VM faulting in fresh pages was a quarter of the checks.
+std::optional<Candidates> candidates_of(const Mesh& mesh, const Mesh& others,
+                                        const std::vector<std::array<Point, 3>>& triangles,
+                                        const PatchFaceSet* in_patch,
+                                        const std::vector<int>* near_reach, const Box& reach,
+                                        unsigned threads, const Progress* progress) {
+  Candidates c;
+  c.faces.resize(triangles.size());
+  for (const auto& t : triangles) {
+    c.boxes.emplace_back(static_cast<int>(c.boxes.size()), box_of_corners(t));
+  }
+  const std::size_t count = near_reach ? near_reach->size() : mesh.n_faces();
+  const auto other_face = [&](std::size_t i) -> std::optional<std::pair<FaceHandle, Box>> {
+    const FaceHandle f(near_reach ? (*near_reach)[i] : static_cast<int>(i));
+    if (!near_reach && mesh.has_face_status() && mesh.status(f).deleted()) return std::nullopt;
+    if ((in_patch && in_patch->contains(f)) || others.valence(f) != 3) return std::nullopt;
+    const Box box = box_of(others, f);
+    if (!box.overlaps(reach)) return std::nullopt;
+    return std::pair(f, box);
+  };
+  const std::size_t blocks = blocks_of(count, kFacesPerBlock);
+  std::vector<std::size_t> block_start(blocks + 1, 0);
+  for_each_index(blocks, threads, [&](std::size_t block) {
+    for (std::size_t i = block * kFacesPerBlock; i < std::min(count, (block + 1) * kFacesPerBlock);
+         ++i) {
+      if (stop_at(i, progress)) return;
+      if (other_face(i)) ++block_start[block + 1];
+    }
+  });
+  if (is_cancelled(progress)) return std::nullopt;
+  block_start[0] = triangles.size();
+  for (std::size_t block = 0; block < blocks; ++block) block_start[block + 1] += block_start[block];
+  c.faces.resize(block_start.back());
+  c.boxes.resize(block_start.back());
+  for_each_index(blocks, threads, [&](std::size_t block) {
+    std::size_t at = block_start[block];
+    for (std::size_t i = block * kFacesPerBlock; i < std::min(count, (block + 1) * kFacesPerBlock);
+         ++i) {
+      if (const auto found = other_face(i)) {
+        c.faces[at] = found->first;
+        c.boxes[at] = {static_cast<int>(at), found->second};
+        ++at;
+      }
+    }
+  });
+  double magnitude = 0.0;
+  for (const auto& [id, box] : c.boxes) magnitude = std::max(magnitude, box.magnitude());
+  const double scale = scale_for(magnitude);
+  c.scaled.resize(c.faces.size());
+  for_each_index(blocks_of(c.faces.size(), kFacesPerBlock), threads, [&](std::size_t block) {
+    for (std::size_t o = block * kFacesPerBlock;
+         o < std::min(c.faces.size(), (block + 1) * kFacesPerBlock); ++o) {
+      if (o < triangles.size()) {
+        c.scaled[o] = triangle_from(triangles[o], scale);
+        continue;
+      }
+      auto fv = others.cfv_iter(c.faces[o]);
+      c.scaled[o] =
+          triangle_from({others.point(*fv), others.point(*++fv), others.point(*++fv)}, scale);
+    }
+  });
+  return c;
+}
+
+}  // namespace
+
 std::vector<IntersectingPair> triangle_intersections(
     const Mesh& mesh, const std::vector<std::array<Point, 3>>& triangles,
     const PatchFaceSet* in_patch, const MeshFaceIndex* around, bool exact_too,
@@ -48,62 +134,24 @@ std::vector<IntersectingPair> triangle_intersections(
   // mesh, patch_apart.h): the other triangles are read there, and none of them is the patch's.
   const Mesh& others = around ? around->mesh() : mesh;
   if (&others != &mesh) in_patch = nullptr;
-  // Candidates: the patch's triangles first, then the mesh's faces near them. The arrays are
-  // sized before they are filled, and the mesh faces' corners read again rather than kept: after
-  // each stage of a large hole they hold hundreds of thousands of entries, and on this VM
-  // faulting in fresh pages was a quarter of the checks.
   Box reach;
   for (const auto& t : triangles) reach.add(box_of_corners(t));
   reach.grow(1e-9 * (reach.high - reach.low).max());
   const std::vector<int> near_reach = around ? around->near(reach) : std::vector<int>{};
-  const std::size_t candidates = triangles.size() + near_reach.size();
-  std::vector<FaceHandle> faces;
-  faces.reserve(candidates);
-  faces.resize(triangles.size());
-  std::vector<std::pair<int, Box>> boxes;
-  boxes.reserve(candidates);
-  for (const auto& t : triangles) {
-    boxes.emplace_back(static_cast<int>(boxes.size()), box_of_corners(t));
-  }
-  auto consider = [&](FaceHandle f) {
-    if ((in_patch && in_patch->contains(f)) || others.valence(f) != 3) return;
-    const Box box = box_of(others, f);
-    if (!box.overlaps(reach)) return;
-    faces.push_back(f);
-    boxes.emplace_back(static_cast<int>(boxes.size()), box);
-  };
-  if (around) {
-    for (std::size_t i = 0; i < near_reach.size(); ++i) {
-      if (stop_at(i, progress)) return {};
-      consider(FaceHandle(near_reach[i]));
-    }
-  } else {
-    for (const auto f : mesh.faces()) {
-      if (stop_at(f.idx(), progress)) return {};
-      consider(f);
-    }
-  }
-  double magnitude = 0.0;
-  for (const auto& [id, box] : boxes) magnitude = std::max(magnitude, box.magnitude());
-  const double scale = scale_for(magnitude);
+  const unsigned threads = around ? around->threads() : 1;
+  auto candidates = candidates_of(mesh, others, triangles, in_patch, around ? &near_reach : nullptr,
+                                  reach, threads, progress);
+  if (!candidates) return {};
+  const auto& faces = candidates->faces;
+  const auto& scaled = candidates->scaled;
   const int patch_triangles = static_cast<int>(triangles.size());
-  std::vector<std::optional<Triangle3>> scaled;
-  scaled.reserve(faces.size());
-  for (const auto& t : triangles) scaled.push_back(triangle_from(t, scale));
-  for (std::size_t o = triangles.size(); o < faces.size(); ++o) {
-    if (stop_at(o, progress)) return {};
-    auto fv = others.cfv_iter(faces[o]);
-    scaled.push_back(
-        triangle_from({others.point(*fv), others.point(*++fv), others.point(*++fv)}, scale));
-  }
-
   // The exact test takes the coordinates as stored.
   const auto corners_of = [&](int o) -> std::array<Point, 3> {
     if (o < patch_triangles) return triangles[o];
     auto fv = others.cfv_iter(faces[o]);
     return {others.point(*fv), others.point(*++fv), others.point(*++fv)};
   };
-  const FaceGrid grid(std::move(boxes));
+  const FaceGrid grid(std::move(candidates->boxes), threads);
   auto scan = [&](int begin, int end, std::vector<IntersectingPair>& pairs) {
     for (int i = begin; i < end; ++i) {
       if (stop_at(i, progress)) return;
@@ -122,8 +170,7 @@ std::vector<IntersectingPair> triangle_intersections(
   };
   // A large patch (a hole of a thousand edges refined) is scanned in blocks on the threads the
   // index allows, the blocks' pairs joined in order: the pairs of one thread.
-  const unsigned threads = around ? around->threads() : 1;
-  const int blocks = (patch_triangles + kTrianglesPerBlock - 1) / kTrianglesPerBlock;
+  const int blocks = static_cast<int>(blocks_of(triangles.size(), kTrianglesPerBlock));
   if (threads < 2 || blocks < 2) {
     std::vector<IntersectingPair> pairs;
     scan(0, patch_triangles, pairs);

@@ -161,10 +161,11 @@ TEST(MeshFaceIndex, AViewFindsWhatItsWholeFindsInsideItsRegionOnly) {
   EXPECT_EQ(&view.mesh(), &mesh);
 }
 
-// A patch of thousands of triangles (three blocks) checked on several threads gives the pairs of
-// one thread, in the same order.
+// A patch of thousands of triangles (three blocks) over a grid of 20,000 faces (two blocks of
+// faces to gather, several chunks of the grid's cells) checked on several threads gives the pairs
+// of one thread, in the same order.
 TEST(MeshFaceIndex, ALargePatchIsCheckedInBlocksWithTheOneThreadPairs) {
-  const Mesh mesh = testing::make_grid(30, [](double x, double y) { return 0.05 * (x - y); });
+  const Mesh mesh = testing::make_grid(100, [](double x, double y) { return 0.05 * (x - y); });
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> at(0.0, 1.0), height(-0.1, 0.1);
   std::vector<std::array<Point, 3>> triangles;
@@ -177,14 +178,16 @@ TEST(MeshFaceIndex, ALargePatchIsCheckedInBlocksWithTheOneThreadPairs) {
   all.add(Point(2, 2, 1));
   MeshFaceIndex index(mesh, {all});
   const auto one = triangle_intersections(mesh, triangles, nullptr, &index, true);
-  index.set_threads(3);
-  const auto three = triangle_intersections(mesh, triangles, nullptr, &index, true);
   ASSERT_GT(one.size(), 1000u);
-  ASSERT_EQ(three.size(), one.size());
-  for (std::size_t p = 0; p < one.size(); ++p) {
-    EXPECT_EQ(three[p].triangle, one[p].triangle);
-    EXPECT_EQ(three[p].other_triangle, one[p].other_triangle);
-    EXPECT_EQ(three[p].other_face, one[p].other_face);
+  for (const unsigned threads : {2u, 3u, 1000u}) {
+    index.set_threads(threads);
+    const auto many = triangle_intersections(mesh, triangles, nullptr, &index, true);
+    ASSERT_EQ(many.size(), one.size()) << threads << " threads";
+    for (std::size_t p = 0; p < one.size(); ++p) {
+      EXPECT_EQ(many[p].triangle, one[p].triangle);
+      EXPECT_EQ(many[p].other_triangle, one[p].other_triangle);
+      EXPECT_EQ(many[p].other_face, one[p].other_face);
+    }
   }
 }
 

@@ -21,6 +21,9 @@ struct PatchStats {
 };
 
 PatchStats patch_stats(const Mesh& mesh, const Patch& patch);
+// The same measured on up to `threads` threads (a large patch's faces in blocks): the same stats
+// on any number.
+PatchStats patch_stats(const Mesh& mesh, const Patch& patch, unsigned threads);
 
 // Valence histogram of every vertex of the mesh, for reference beside a patch's.
 std::map<int, std::size_t> valence_histogram(const Mesh& mesh);
