@@ -92,9 +92,10 @@ void write_output(const std::string& path, const std::string& bytes, std::ostrea
 // To standard output the mesh goes a piece at a time as it is made, never whole in memory.
 void write_mesh_output(const Mesh& mesh, MeshFormat format, const FillArguments& a,
                        std::ostream& out) {
-  if (a.output != "-") return save_mesh(mesh, a.output, format);
-  write_mesh_pieces(mesh, format, mesh_output_name(a),
-                    [&out](std::string_view piece) { write_to_stream(piece, out); });
+  if (a.output != "-") return save_mesh(mesh, a.output, format, a.options.threads);
+  write_mesh_pieces(
+      mesh, format, mesh_output_name(a),
+      [&out](std::string_view piece) { write_to_stream(piece, out); }, a.options.threads);
   flush_stream(out);
 }
 

@@ -1,6 +1,6 @@
 // How many threads the library starts, counted where every thread starts (pthread_create,
-// thread_counter.h): a count of threads given to loading, preparing and filling bounds every
-// stage of them, one thread starts none, and the full search asked to choose uses every core
+// thread_counter.h): a count of threads given to loading, preparing, filling and writing bounds
+// every stage of them, one thread starts none, and the full search asked to choose uses every core
 // this process may run on.
 #include <gtest/gtest.h>
 #include <sched.h>
@@ -59,7 +59,7 @@ std::string rows_apart_obj(int n) {
 }
 
 // Loads, prepares and fills (the holes, not the border) on `threads` threads; the filled mesh as
-// an OBJ.
+// an OBJ written on as many.
 std::string filled(const std::string& obj, unsigned threads) {
   Mesh mesh = load_mesh_from_memory(obj, "rows.obj", nullptr, threads);
   PrepareOptions preparation;
@@ -70,7 +70,7 @@ std::string filled(const std::string& obj, unsigned threads) {
   HoleSelection holes;
   holes.max_boundary_edges = 200;  // not the grid's border
   fill_holes(mesh, prepared.holes, options, holes);
-  return mesh_to_bytes(mesh, "filled.obj");
+  return mesh_to_bytes(mesh, "filled.obj", threads);
 }
 
 unsigned cores_of_this_process() {
@@ -80,7 +80,7 @@ unsigned cores_of_this_process() {
   return static_cast<unsigned>(CPU_COUNT(&set));
 }
 
-TEST(ThreadCount, OneThreadStartsNoThreadInLoadingPreparingOrFilling) {
+TEST(ThreadCount, OneThreadStartsNoThreadInLoadingPreparingFillingOrWriting) {
   const std::string obj = rows_apart_obj(280);
   ASSERT_GT(obj.size(), std::size_t{8} << 20);
   reset_thread_counts();

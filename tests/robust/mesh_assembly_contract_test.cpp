@@ -17,6 +17,7 @@
 #include "holefill/obj_attributes.h"
 #include "io/mesh_from_triangles.h"
 #include "io/readers.h"
+#include "io/repair_checks.h"
 #include "io/soup_to_mesh.h"
 #include "io/two_threads.h"
 #include "mesh_room.h"
@@ -55,22 +56,63 @@ TEST(MeshAssembly, EdgeUsesAreThoseOfSortingByEdgeThenTriangle) {
     const int a = many(rng), b = a % 300 + 1;
     triangles.push_back(i % 2 ? io::Triangle{0, a, b} : io::Triangle{b, 0, a});
   }
-  const io::EdgeUses uses(triangles);
-  std::vector<UseTuple> listed;
-  std::size_t edges = 0;
-  uses.for_each_edge([&](int smaller, std::size_t first, std::size_t last) {
-    ++edges;
-    EXPECT_GE(uses.start(static_cast<std::size_t>(smaller) + 1), last);
-    for (std::size_t k = first; k < last; ++k) {
-      EXPECT_EQ(uses[k].larger(), uses[first].larger());
-      listed.emplace_back(smaller, uses[k].larger(), uses[k].triangle(), uses[k].forward());
-    }
-  });
   const auto expected = sorted_edge_uses(triangles);
-  EXPECT_EQ(listed, expected);
   std::set<std::pair<int, int>> distinct;
   for (const auto& [a, b, t, forward] : expected) distinct.emplace(a, b);
-  EXPECT_EQ(edges, distinct.size());
+  // Made in blocks of triangles on several threads, up to more threads than triangles.
+  for (const unsigned threads : {1u, 2u, 3u, 2000u}) {
+    SCOPED_TRACE(threads);
+    const io::EdgeUses uses(triangles, threads);
+    std::vector<UseTuple> listed;
+    std::size_t edges = 0;
+    uses.for_each_edge([&](int smaller, std::size_t first, std::size_t last) {
+      ++edges;
+      EXPECT_GE(uses.start(static_cast<std::size_t>(smaller) + 1), last);
+      for (std::size_t k = first; k < last; ++k) {
+        EXPECT_EQ(uses[k].larger(), uses[first].larger());
+        listed.emplace_back(smaller, uses[k].larger(), uses[k].triangle(), uses[k].forward());
+      }
+    });
+    EXPECT_EQ(listed, expected);
+    EXPECT_EQ(edges, distinct.size());
+  }
+}
+
+// The checks that let the repairs skip their walks say what the soups hold, on any number of
+// threads (more than the edges too): one closed tetrahedron, two touching at a vertex (two closed
+// fans there), a bowtie (two open fans), a strip, a flipped neighbour, a fin (three triangles on
+// an edge).
+TEST(MeshAssembly, RepairChecksFindWhatTheRepairsWouldRepair) {
+  using T = std::vector<io::Triangle>;
+  const T tetra = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
+  T two_tetras = tetra;
+  for (const auto& t : tetra) {
+    two_tetras.push_back({t[0] ? t[0] + 3 : 0, t[1] ? t[1] + 3 : 0, t[2] ? t[2] + 3 : 0});
+  }
+  const T bowtie = {{0, 1, 2}, {0, 3, 4}}, strip = {{0, 1, 2}, {2, 1, 3}, {2, 3, 4}};
+  const T flipped = {{0, 1, 2}, {1, 2, 3}}, fin = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  struct Case {
+    const char* name;
+    T triangles;
+    bool same_way, non_manifold, several_fans;
+  };
+  const Case cases[] = {{"tetrahedron", tetra, false, false, false},
+                        {"two tetrahedra at a vertex", two_tetras, false, false, true},
+                        {"bowtie", bowtie, false, false, true},
+                        {"strip", strip, false, false, false},
+                        {"flipped neighbour", flipped, true, true, false},
+                        {"fin", fin, false, true, false}};
+  for (const auto& c : cases) {
+    for (const unsigned threads : {1u, 2u, 3u, 64u}) {
+      SCOPED_TRACE(std::string(c.name) + ", threads " + std::to_string(threads));
+      const io::EdgeUses uses(c.triangles, threads);
+      EXPECT_EQ(io::any_edge_run_the_same_way(uses, threads), c.same_way);
+      EXPECT_EQ(io::any_non_manifold_edge(uses, threads), c.non_manifold);
+      if (!c.non_manifold) {
+        EXPECT_EQ(io::any_vertex_with_several_fans(c.triangles, uses, threads), c.several_fans);
+      }
+    }
+  }
 }
 
 // The mesh assemble makes follows its contract, checked against the triangles themselves: the

@@ -64,23 +64,27 @@ Mesh load_mesh_from_memory(const std::string& bytes, const std::filesystem::path
 // folder); through write_output_file (output_file.h): either the whole file appears at `path` or
 // nothing changes there, links are followed and permissions kept. Throws FileError saying why it
 // could not be written (for an extension that names no format: before anything is written).
-void save_mesh(const Mesh& mesh, const std::filesystem::path& path);
+// The text or records of a big mesh are made on up to `threads` threads (0: every core this
+// process may run on; 1 starts none): the same bytes on any number.
+void save_mesh(const Mesh& mesh, const std::filesystem::path& path, unsigned threads = 0);
 // The same in `format`, whatever `path`'s extension (for callers that decided it already).
-void save_mesh(const Mesh& mesh, const std::filesystem::path& path, MeshFormat format);
+void save_mesh(const Mesh& mesh, const std::filesystem::path& path, MeshFormat format,
+               unsigned threads = 0);
 
 // Hands `write` the bytes save_mesh writes for `mesh` in the format `name`'s extension says (.obj
 // .off .ply .stl), in order, in pieces of about a megabyte as they are made, for callers that
 // send them elsewhere (standard output): the file never exists whole in memory. Throws FileError
 // naming `name` for another extension, before any piece; what `write` throws passes through.
-void write_mesh_pieces(const Mesh& mesh, const std::filesystem::path& name,
-                       const ByteWriter& write);
+void write_mesh_pieces(const Mesh& mesh, const std::filesystem::path& name, const ByteWriter& write,
+                       unsigned threads = 0);
 // The same in `format`; `name` stands in for the file in errors and names an OBJ's material
 // libraries relative to its folder.
 void write_mesh_pieces(const Mesh& mesh, MeshFormat format, const std::filesystem::path& name,
-                       const ByteWriter& write);
+                       const ByteWriter& write, unsigned threads = 0);
 
 // The bytes write_mesh_pieces hands on, whole.
-std::string mesh_to_bytes(const Mesh& mesh, const std::filesystem::path& name);
+std::string mesh_to_bytes(const Mesh& mesh, const std::filesystem::path& name,
+                          unsigned threads = 0);
 
 // What save_mesh leaves out of a file of `name`'s format (by extension) that the mesh carries,
 // one phrase per kind (e.g. "vertex properties quality" for an OBJ, "texture coordinates, ..."

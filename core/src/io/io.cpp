@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "../available_cores.h"
 #include "file_bytes.h"
 #include "holefill/output_file.h"
 #include "readers.h"
@@ -178,34 +179,38 @@ Mesh load_mesh(const fs::path& path, LoadReport* report, unsigned threads) {
 }
 
 void write_mesh_pieces(const Mesh& mesh, MeshFormat format, const fs::path& name,
-                       const ByteWriter& write) {
+                       const ByteWriter& write, unsigned threads) {
+  if (threads == 0) threads = detail::available_cores();
   // Indices in the file must count live elements only.
   if (has_deleted_elements(mesh)) {
     Mesh compacted = mesh;
     compacted.garbage_collection();
-    return io::write_mesh_file(compacted, format, name, write);
+    return io::write_mesh_file(compacted, format, name, write, threads);
   }
-  io::write_mesh_file(mesh, format, name, write);
+  io::write_mesh_file(mesh, format, name, write, threads);
 }
 
-void write_mesh_pieces(const Mesh& mesh, const fs::path& name, const ByteWriter& write) {
-  write_mesh_pieces(mesh, writable_format(name), name, write);
+void write_mesh_pieces(const Mesh& mesh, const fs::path& name, const ByteWriter& write,
+                       unsigned threads) {
+  write_mesh_pieces(mesh, writable_format(name), name, write, threads);
 }
 
-std::string mesh_to_bytes(const Mesh& mesh, const fs::path& name) {
+std::string mesh_to_bytes(const Mesh& mesh, const fs::path& name, unsigned threads) {
   std::string bytes;
-  write_mesh_pieces(mesh, name, [&bytes](std::string_view piece) { bytes += piece; });
+  write_mesh_pieces(
+      mesh, name, [&bytes](std::string_view piece) { bytes += piece; }, threads);
   return bytes;
 }
 
 // The file is written as it is made, a piece at a time, never whole in memory.
-void save_mesh(const Mesh& mesh, const fs::path& path, MeshFormat format) {
-  write_output_file(path,
-                    [&](const ByteWriter& write) { write_mesh_pieces(mesh, format, path, write); });
+void save_mesh(const Mesh& mesh, const fs::path& path, MeshFormat format, unsigned threads) {
+  write_output_file(path, [&](const ByteWriter& write) {
+    write_mesh_pieces(mesh, format, path, write, threads);
+  });
 }
 
-void save_mesh(const Mesh& mesh, const fs::path& path) {
-  save_mesh(mesh, path, writable_format(path));  // decided before the output file is begun
+void save_mesh(const Mesh& mesh, const fs::path& path, unsigned threads) {
+  save_mesh(mesh, path, writable_format(path), threads);  // decided before the file is begun
 }
 
 }  // namespace holefill

@@ -4,59 +4,91 @@
 #include <array>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 
 #include "../mesh_room.h"
+#include "../parallel_indices.h"
 #include "huge_pages.h"
 #include "two_threads.h"
 
 namespace holefill::io {
 // A counting sort by the smaller vertex (stable: triangles in order), then each vertex's uses by
 // the larger vertex: the order of sorting by (edge, triangle), in time linear in the triangles
-// where a comparison sort of all uses was the largest cost of loading a big mesh.
-EdgeUses::EdgeUses(const std::vector<Triangle>& triangles) {
+// where a comparison sort of all uses was the largest cost of loading a big mesh. On several
+// threads, each block of triangles is counted on its own and placed after the blocks before it
+// in each vertex's run, so the uses are the same.
+EdgeUses::EdgeUses(const std::vector<Triangle>& triangles, unsigned threads) {
   auto ends = [&triangles](std::size_t t, int c) {
     const auto a = static_cast<std::uint32_t>(triangles[t][c]);
     const auto b = static_cast<std::uint32_t>(triangles[t][(c + 1) % 3]);
     return std::pair{a, b};
   };
-  std::uint32_t vertices = 0;
-  for (const auto& triangle : triangles) {
-    for (const int v : triangle) vertices = std::max(vertices, static_cast<std::uint32_t>(v) + 1);
-  }
-  // Counted at v + 2 and summed, start_[v + 1] is where v's run starts; filling it moves it to
-  // where the run ends, which is where v + 1's starts.
-  start_ = huge_page_vector(std::size_t{vertices} + 2, std::size_t{0});
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    for (int c = 0; c < 3; ++c) {
-      const auto [a, b] = ends(t, c);
-      ++start_[std::min(a, b) + std::size_t{2}];
+  const std::size_t parts = std::max(1u, threads), count = triangles.size();
+  auto part_begin = [&](std::size_t p) { return count * p / parts; };
+  std::vector<std::uint32_t> bound(parts, 0);
+  detail::for_each_index(parts, threads, [&](std::size_t p) {
+    for (std::size_t t = part_begin(p); t < part_begin(p + 1); ++t) {
+      for (const int v : triangles[t])
+        bound[p] = std::max(bound[p], static_cast<std::uint32_t>(v) + 1);
     }
+  });
+  const std::size_t vertices = *std::max_element(bound.begin(), bound.end());
+  // Per block, its uses of each vertex v counted at v + 1, then turned into where they go.
+  std::vector<std::vector<std::size_t>> next(parts);
+  detail::for_each_index(parts, threads, [&](std::size_t p) {
+    next[p] = huge_page_vector(vertices + 2, std::size_t{0});
+    for (std::size_t t = part_begin(p); t < part_begin(p + 1); ++t) {
+      for (int c = 0; c < 3; ++c) {
+        const auto [a, b] = ends(t, c);
+        ++next[p][std::min(a, b) + std::size_t{1}];
+      }
+    }
+  });
+  std::size_t placed = 0;
+  for (std::size_t v = 0; v <= vertices; ++v) {
+    for (std::size_t p = 0; p < parts; ++p) placed += std::exchange(next[p][v + 1], placed);
   }
-  for (std::size_t v = 0; v + 1 < start_.size(); ++v) start_[v + 1] += start_[v];
-  size_ = 3 * triangles.size();
+  size_ = 3 * count;
   for (std::size_t first = 0; first < size_; first += std::size_t{1} << kBlockBits) {
     blocks_.push_back(huge_page_array<EdgeUse>(std::min(size_ - first, kBlockMask + 1)));
   }
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    for (int c = 0; c < 3; ++c) {
-      const auto [a, b] = ends(t, c);
-      (*this)[start_[std::min(a, b) + std::size_t{1}]++] =
-          EdgeUse(static_cast<int>(std::max(a, b)), static_cast<int>(t), a < b);
+  detail::for_each_index(parts, threads, [&](std::size_t p) {
+    for (std::size_t t = part_begin(p); t < part_begin(p + 1); ++t) {
+      for (int c = 0; c < 3; ++c) {
+        const auto [a, b] = ends(t, c);
+        (*this)[next[p][std::min(a, b) + std::size_t{1}]++] =
+            EdgeUse(static_cast<int>(std::max(a, b)), static_cast<int>(t), a < b);
+      }
     }
-  }
+  });
+  // The last block's counters end where each vertex's run ends: where the next one's starts.
+  start_ = std::move(next.back());
   start_.pop_back();
-  sort_runs_by_larger();
+  next.clear();
+  const std::vector<std::size_t> part = vertex_parts(parts);
+  detail::for_each_index(parts, threads,
+                         [&](std::size_t p) { sort_runs_by_larger(part[p], part[p + 1]); });
+}
+
+std::vector<std::size_t> EdgeUses::vertex_parts(std::size_t parts) const {
+  std::vector<std::size_t> first(parts + 1, vertex_bound());
+  first[0] = 0;
+  for (std::size_t p = 1; p < parts; ++p) {
+    const auto at = std::lower_bound(start_.begin(), start_.end() - 1, size_ * p / parts);
+    first[p] = std::max(first[p - 1], static_cast<std::size_t>(at - start_.begin()));
+  }
+  return first;
 }
 
 // Sorts each vertex's uses, already in triangle order, by the larger vertex: by insertion where a
 // vertex has a few edges (stable, so ties stay in triangle order), else by the full order.
-void EdgeUses::sort_runs_by_larger() {
+void EdgeUses::sort_runs_by_larger(std::size_t first_vertex, std::size_t last_vertex) {
   constexpr std::size_t kInsertionLimit = 32;
   auto before = [](const EdgeUse& a, const EdgeUse& b) {
     return a.larger() != b.larger() ? a.larger() < b.larger() : a.triangle() < b.triangle();
   };
   std::vector<EdgeUse> long_run;
-  for (std::size_t v = 0; v < vertex_bound(); ++v) {
+  for (std::size_t v = first_vertex; v < last_vertex; ++v) {
     const std::size_t begin = start_[v], end = start_[v + 1];
     if (end - begin > kInsertionLimit) {
       long_run.clear();

@@ -48,7 +48,9 @@ static_assert(sizeof(EdgeUse) == 8);
 class EdgeUses {
  public:
   EdgeUses() = default;
-  explicit EdgeUses(const std::vector<Triangle>& triangles);
+  // Made on `threads` threads (blocks of triangles counted and placed apart, the runs sorted in
+  // blocks of vertices): the same uses on any number.
+  explicit EdgeUses(const std::vector<Triangle>& triangles, unsigned threads = 1);
 
   bool empty() const { return size_ == 0; }
   std::size_t size() const { return size_; }
@@ -63,7 +65,12 @@ class EdgeUses {
   // Calls visit(smaller, first, last) for the uses [first, last) of each edge, in edge order.
   template <class Visit>
   void for_each_edge(Visit&& visit) const {
-    for (std::size_t v = 0; v < vertex_bound(); ++v) {
+    for_each_edge_in(0, vertex_bound(), visit);
+  }
+  // The same for the edges whose smaller vertex is in [first_vertex, last_vertex).
+  template <class Visit>
+  void for_each_edge_in(std::size_t first_vertex, std::size_t last_vertex, Visit&& visit) const {
+    for (std::size_t v = first_vertex; v < last_vertex; ++v) {
       for (std::size_t i = start_[v]; i < start_[v + 1];) {
         std::size_t j = i + 1;
         while (j < start_[v + 1] && (*this)[j].larger() == (*this)[i].larger()) ++j;
@@ -73,13 +80,17 @@ class EdgeUses {
     }
   }
 
+  // Where `parts` blocks of vertices with about as many uses each begin, and the end: parts + 1
+  // vertices from 0 to vertex_bound(), for work on the edges in blocks (for_each_edge_in).
+  std::vector<std::size_t> vertex_parts(std::size_t parts) const;
+
   // Frees the blocks that hold only uses before `first`, which must not be read again.
   void release_before(std::size_t first);
 
  private:
   static constexpr int kBlockBits = 18;  // 256 K uses, 2 MB: one huge page
   static constexpr std::size_t kBlockMask = (std::size_t{1} << kBlockBits) - 1;
-  void sort_runs_by_larger();
+  void sort_runs_by_larger(std::size_t first_vertex, std::size_t last_vertex);
 
   std::vector<std::size_t> start_;
   std::vector<HugePageArray<EdgeUse>> blocks_;

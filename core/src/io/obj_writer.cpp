@@ -44,16 +44,15 @@ void append_coloured_vertices(const Mesh& mesh, PieceOut& out) {
     channels.emplace_back(vertex_attribute(mesh, name), full_intensity(found->type));
   }
   if (channels.size() != 3) channels.clear();
-  append_vertices(
-      mesh, out.text, "v ",
-      [&](VertexHandle v) {
-        for (const auto& [property, scale] : channels) {
-          out.text += ' ';
-          append_number(out.text, scale == 1.0 ? mesh.property(property, v)
-                                               : mesh.property(property, v) / scale);
-        }
-      },
-      [&out] { out.end_record(); });
+  out.records(mesh.n_vertices(), [&](std::string& text, std::size_t first, std::size_t last) {
+    append_vertices(mesh, text, first, last, "v ", [&](VertexHandle v) {
+      for (const auto& [property, scale] : channels) {
+        text += ' ';
+        append_number(
+            text, scale == 1.0 ? mesh.property(property, v) : mesh.property(property, v) / scale);
+      }
+    });
+  });
 }
 
 // The number each table entry is written as (indexed by the mesh's number, 0: not written):
@@ -151,30 +150,39 @@ void append_face(const Mesh& mesh, FaceHandle f, const ObjHandles& obj,
   out += '\n';
 }
 
+// The faces in their groups' order, each block of them starting from the object, group,
+// material and smoothing group of the face before it (none before the first), so that a block
+// says what changes where the whole file would.
 void append_faces_with_states(const Mesh& mesh, const ObjHandles& obj, const ObjTables& tables,
                               const std::vector<int>& texcoord, const std::vector<int>& normal,
                               PieceOut& pieces) {
-  std::string& out = pieces.text;
-  int object = 0, group = 0, material = 0, smoothing = 0;
-  // Writes "<keyword> <name>" when a face's number differs from the current one.
-  auto switch_to = [&out](int& current, int number, const char* keyword,
-                          const std::vector<std::string>& names, const char* none) {
-    if (number == current) return;
-    current = number;
-    out += keyword;
-    out += ' ';
-    out += number ? names[number - 1] : none;
-    out += '\n';
-  };
-  for (const auto f : grouped_faces(mesh, obj, tables)) {
-    switch_to(object, obj_face_number(mesh, obj.object, f), "o", tables.objects, "");
-    switch_to(group, obj_face_number(mesh, obj.group, f), "g", tables.groups, "default");
-    switch_to(material, obj_face_number(mesh, obj.material, f), "usemtl", tables.materials, "");
-    switch_to(smoothing, obj_face_number(mesh, obj.smoothing, f), "s", tables.smoothing_groups,
-              "off");
-    append_face(mesh, f, obj, texcoord, normal, out);
-    pieces.end_record();
-  }
+  const std::vector<FaceHandle> faces = grouped_faces(mesh, obj, tables);
+  pieces.records(faces.size(), [&](std::string& out, std::size_t first, std::size_t last) {
+    // Writes "<keyword> <name>" when a face's number differs from the current one.
+    auto switch_to = [&out](int& current, int number, const char* keyword,
+                            const std::vector<std::string>& names, const char* none) {
+      if (number == current) return;
+      current = number;
+      out += keyword;
+      out += ' ';
+      out += number ? names[number - 1] : none;
+      out += '\n';
+    };
+    auto number = [&](OpenMesh::FPropHandleT<int> property, std::size_t i) {
+      return i == 0 ? 0 : obj_face_number(mesh, property, faces[i - 1]);
+    };
+    int object = number(obj.object, first), group = number(obj.group, first),
+        material = number(obj.material, first), smoothing = number(obj.smoothing, first);
+    for (std::size_t i = first; i < last; ++i) {
+      const FaceHandle f = faces[i];
+      switch_to(object, obj_face_number(mesh, obj.object, f), "o", tables.objects, "");
+      switch_to(group, obj_face_number(mesh, obj.group, f), "g", tables.groups, "default");
+      switch_to(material, obj_face_number(mesh, obj.material, f), "usemtl", tables.materials, "");
+      switch_to(smoothing, obj_face_number(mesh, obj.smoothing, f), "s", tables.smoothing_groups,
+                "off");
+      append_face(mesh, f, obj, texcoord, normal, out);
+    }
+  });
 }
 
 }  // namespace
@@ -194,8 +202,9 @@ void write_obj(const Mesh& mesh, const fs::path& output, PieceOut& out) {
   if (obj.valid()) append_material_libraries(out.text, mesh.property(obj.tables), output);
   append_coloured_vertices(mesh, out);
   if (!obj.valid()) {
-    append_faces(
-        mesh, out.text, "f ", 1, [](FaceHandle) {}, [&out] { out.end_record(); });
+    out.records(mesh.n_faces(), [&](std::string& text, std::size_t first, std::size_t last) {
+      append_faces(mesh, text, first, last, "f ", 1, [](FaceHandle) {});
+    });
     return;
   }
   const ObjTables& tables = mesh.property(obj.tables);

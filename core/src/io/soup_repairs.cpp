@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "huge_pages.h"
+#include "repair_checks.h"
 #include "soup.h"
 
 namespace holefill::io {
@@ -60,15 +61,10 @@ class NeighbourFlips {
 // EdgeUses) alike. Pieces that cannot be oriented (a Moebius strip) keep a conflict, which
 // detach_non_manifold resolves.
 std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Triangle>& corners,
-                                EdgeUses& uses) {
+                                EdgeUses& uses, unsigned threads) {
   // Where no two triangles run along an edge the same way, none is flipped: the neighbours, the
   // marks and the walk over every piece (a tenth of assembling a clean 1M-face mesh) are spared.
-  bool any_conflict = false;
-  uses.for_each_edge([&](int, std::size_t i, std::size_t j) {
-    any_conflict = any_conflict || (j - i == 2 && uses[i].triangle() != uses[i + 1].triangle() &&
-                                    uses[i].forward() == uses[i + 1].forward());
-  });
-  if (!any_conflict) return 0;
+  if (!any_edge_run_the_same_way(uses, threads)) return 0;
   const int count = static_cast<int>(triangles.size());
   // Up to three neighbours per triangle, and whether each must take the opposite orientation.
   auto neighbour = huge_page_vector(triangles.size(), std::array<int, 3>{-1, -1, -1});
@@ -127,8 +123,10 @@ std::size_t orient_consistently(std::vector<Triangle>& triangles, std::vector<Tr
 // Marks the triangles that must be kept apart so that every edge is used at most twice, in
 // opposite directions: on each edge the first triangle and the first one after it running the
 // other way stay; later ones (a third sheet on the edge, a fin) are detached.
-std::vector<char> detach_non_manifold(const EdgeUses& uses, std::size_t triangles) {
+std::vector<char> detach_non_manifold(const EdgeUses& uses, std::size_t triangles,
+                                      unsigned threads) {
   std::vector<char> detached = huge_page_vector(triangles, char{0});
+  if (!any_non_manifold_edge(uses, threads)) return detached;
   uses.for_each_edge([&](int, std::size_t i, std::size_t j) {
     int kept = 0;
     bool first_forward = false;
@@ -221,7 +219,13 @@ std::vector<std::pair<int, int>> fans_of_shared_vertices(const std::vector<Trian
 // EdgeUses.
 std::size_t split_closed_fans(std::vector<Triangle>& triangles, const EdgeUses& uses,
                               const std::vector<char>& detached, std::vector<Point>& positions,
-                              std::vector<int>& origin) {
+                              std::vector<int>& origin, unsigned threads) {
+  // Where no triangle is kept apart, whether any vertex has two fans is decided first on `threads`
+  // threads (a clean mesh has none, and is spared the serial walks below).
+  if (std::find(detached.begin(), detached.end(), 1) == detached.end() &&
+      !any_vertex_with_several_fans(triangles, uses, threads)) {
+    return 0;
+  }
   WedgeFans wedges(triangles, uses, detached);
   const auto fans = fans_of_shared_vertices(triangles, detached, positions.size(), wedges);
   if (fans.empty()) return 0;
@@ -308,11 +312,11 @@ std::size_t count_duplicate_positions(const std::vector<Point>& positions) {
 // else freed before the mesh is assembled.
 std::vector<char> make_consistent(std::vector<Triangle>& triangles, std::vector<Triangle>& corners,
                                   std::vector<Point>& positions, std::vector<int>& origin,
-                                  LoadReport& report, EdgeUses& uses) {
-  uses = EdgeUses(triangles);
-  report.faces_flipped = orient_consistently(triangles, corners, uses);
-  std::vector<char> detached = detach_non_manifold(uses, triangles.size());
-  report.vertices_split = split_closed_fans(triangles, uses, detached, positions, origin);
+                                  LoadReport& report, EdgeUses& uses, unsigned threads) {
+  uses = EdgeUses(triangles, threads);
+  report.faces_flipped = orient_consistently(triangles, corners, uses, threads);
+  std::vector<char> detached = detach_non_manifold(uses, triangles.size(), threads);
+  report.vertices_split = split_closed_fans(triangles, uses, detached, positions, origin, threads);
   if (report.vertices_split) uses = EdgeUses();
   return detached;
 }

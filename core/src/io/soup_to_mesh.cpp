@@ -80,7 +80,7 @@ Mesh build_mesh(Soup soup, LoadReport& report, std::size_t two_threads_from) {
   }
   EdgeUses uses;
   std::vector<char> detached = make_consistent(triangulation.triangles, triangulation.corners,
-                                               positions, origin, report, uses);
+                                               positions, origin, report, uses, two ? 2 : 1);
   MeshSources sources;
   Mesh mesh =
       assemble(std::move(positions), std::move(triangulation.triangles), std::move(detached),

@@ -111,34 +111,39 @@ std::string ply_header(const Mesh& mesh, const AttributeLayout& layout) {
 void write_ply(const Mesh& mesh, PieceOut& out) {
   const AttributeLayout layout = attribute_layout(mesh);
   out.text = ply_header(mesh, layout);
-  ValueWriter writer(out.text, layout.encoding);
   const auto vertex_values = vertex_attributes(mesh, layout.vertex);
-  for (const auto v : mesh.vertices()) {
-    for (int axis = 0; axis < 3; ++axis) {
-      if (axis) writer.separate();
-      writer.write(mesh.point(v)[axis], layout.position_types[axis]);
+  out.records(mesh.n_vertices(), [&](std::string& text, std::size_t first, std::size_t last) {
+    ValueWriter writer(text, layout.encoding);
+    for (std::size_t i = first; i < last; ++i) {
+      const VertexHandle v(static_cast<int>(i));
+      for (int axis = 0; axis < 3; ++axis) {
+        if (axis) writer.separate();
+        writer.write(mesh.point(v)[axis], layout.position_types[axis]);
+      }
+      for (std::size_t a = 0; a < vertex_values.size(); ++a) {
+        writer.separate();
+        writer.write(mesh.property(vertex_values[a], v), layout.vertex[a].type);
+      }
+      writer.end_record();
     }
-    for (std::size_t a = 0; a < vertex_values.size(); ++a) {
-      writer.separate();
-      writer.write(mesh.property(vertex_values[a], v), layout.vertex[a].type);
-    }
-    writer.end_record();
-    out.end_record();
-  }
+  });
   const auto face_values = face_attributes(mesh, layout.face);
-  for (const auto f : mesh.faces()) {
-    writer.write(3.0, layout.face_count_type);
-    for (const auto v : mesh.fv_range(f)) {
-      writer.separate();
-      writer.write(v.idx(), layout.face_index_type);
+  out.records(mesh.n_faces(), [&](std::string& text, std::size_t first, std::size_t last) {
+    ValueWriter writer(text, layout.encoding);
+    for (std::size_t i = first; i < last; ++i) {
+      const FaceHandle f(static_cast<int>(i));
+      writer.write(3.0, layout.face_count_type);
+      for (const auto v : mesh.fv_range(f)) {
+        writer.separate();
+        writer.write(v.idx(), layout.face_index_type);
+      }
+      for (std::size_t a = 0; a < face_values.size(); ++a) {
+        writer.separate();
+        writer.write(mesh.property(face_values[a], f), layout.face[a].type);
+      }
+      writer.end_record();
     }
-    for (std::size_t a = 0; a < face_values.size(); ++a) {
-      writer.separate();
-      writer.write(mesh.property(face_values[a], f), layout.face[a].type);
-    }
-    writer.end_record();
-    out.end_record();
-  }
+  });
 }
 
 // OFF; COFF, NOFF or CNOFF with the colours (in their own type: 0-255 or 0-1) and normals the
@@ -161,34 +166,32 @@ void write_off(const Mesh& mesh, PieceOut& out) {
   if (colour.size() < 3) colour.clear();
   out.text = std::string(colour.empty() ? "" : "C") + (normal.empty() ? "" : "N") + "OFF\n" +
              std::to_string(mesh.n_vertices()) + ' ' + std::to_string(mesh.n_faces()) + " 0\n";
-  ValueWriter writer(out.text, FileEncoding::Ascii);
-  auto line_done = [&out] { out.end_record(); };
-  append_vertices(
-      mesh, out.text, "",
-      [&](VertexHandle v) {
-        for (const auto& list : {normal, colour}) {
-          for (const auto& [property, type] : list) {
-            writer.separate();
-            writer.write(mesh.property(property, v), type);
-          }
+  out.records(mesh.n_vertices(), [&](std::string& text, std::size_t first, std::size_t last) {
+    ValueWriter writer(text, FileEncoding::Ascii);
+    append_vertices(mesh, text, first, last, "", [&](VertexHandle v) {
+      for (const auto& list : {normal, colour}) {
+        for (const auto& [property, type] : list) {
+          writer.separate();
+          writer.write(mesh.property(property, v), type);
         }
-      },
-      line_done);
+      }
+    });
+  });
   // Face attributes other than colours have no place in OFF.
   const bool only_colours = std::all_of(layout.face.begin(), layout.face.end(), [](const auto& a) {
     return a.name == "red" || a.name == "green" || a.name == "blue" || a.name == "alpha";
   });
   const auto face_colour = only_colours ? face_attributes(mesh, layout.face)
                                         : std::vector<OpenMesh::FPropHandleT<double>>{};
-  append_faces(
-      mesh, out.text, "3 ", 0,
-      [&](FaceHandle f) {
-        for (std::size_t a = 0; a < face_colour.size(); ++a) {
-          writer.separate();
-          writer.write(mesh.property(face_colour[a], f), layout.face[a].type);
-        }
-      },
-      line_done);
+  out.records(mesh.n_faces(), [&](std::string& text, std::size_t first, std::size_t last) {
+    ValueWriter writer(text, FileEncoding::Ascii);
+    append_faces(mesh, text, first, last, "3 ", 0, [&](FaceHandle f) {
+      for (std::size_t a = 0; a < face_colour.size(); ++a) {
+        writer.separate();
+        writer.write(mesh.property(face_colour[a], f), layout.face[a].type);
+      }
+    });
+  });
 }
 
 // Binary STL: an 80-byte header, the count, and per triangle its normal, corners and 2 spare
@@ -196,24 +199,29 @@ void write_off(const Mesh& mesh, PieceOut& out) {
 void write_stl(const Mesh& mesh, PieceOut& out) {
   out.text = "binary STL written by holefill";
   out.text.resize(80, ' ');
-  ValueWriter writer(out.text, FileEncoding::BinaryLittleEndian);
-  writer.write(static_cast<double>(mesh.n_faces()), ScalarType::UInt32);
-  for (const auto f : mesh.faces()) {
-    const Point normal = mesh.calc_face_normal(f);
-    for (int axis = 0; axis < 3; ++axis) writer.write(normal[axis], ScalarType::Float32);
-    for (const auto v : mesh.fv_range(f)) {
-      for (int axis = 0; axis < 3; ++axis) writer.write(mesh.point(v)[axis], ScalarType::Float32);
+  ValueWriter(out.text, FileEncoding::BinaryLittleEndian)
+      .write(static_cast<double>(mesh.n_faces()), ScalarType::UInt32);
+  out.records(mesh.n_faces(), [&](std::string& text, std::size_t first, std::size_t last) {
+    ValueWriter writer(text, FileEncoding::BinaryLittleEndian);
+    for (std::size_t i = first; i < last; ++i) {
+      const FaceHandle f(static_cast<int>(i));
+      const Point normal = mesh.calc_face_normal(f);
+      for (int axis = 0; axis < 3; ++axis) writer.write(normal[axis], ScalarType::Float32);
+      for (const auto v : mesh.fv_range(f)) {
+        for (int axis = 0; axis < 3; ++axis) {
+          writer.write(mesh.point(v)[axis], ScalarType::Float32);
+        }
+      }
+      writer.write(0.0, ScalarType::UInt16);
     }
-    writer.write(0.0, ScalarType::UInt16);
-    out.end_record();
-  }
+  });
 }
 
 }  // namespace
 
 void write_mesh_file(const Mesh& mesh, MeshFormat format, const std::filesystem::path& output,
-                     const ByteWriter& write) {
-  PieceOut out(write);
+                     const ByteWriter& write, unsigned threads) {
+  PieceOut out(write, threads);
   switch (format) {
     case MeshFormat::Obj:
       write_obj(mesh, output, out);

@@ -16,9 +16,10 @@ namespace holefill::io {
 
 // Hands `write` the file for `mesh` in `format`, to be written at `output` (an OBJ names its
 // material libraries relative to its folder), in pieces of about a megabyte. Faces index live
-// vertices only: the mesh must hold no deleted elements.
+// vertices only: the mesh must hold no deleted elements. The records are formatted in blocks on
+// `threads` threads (PieceOut), the same bytes on any number.
 void write_mesh_file(const Mesh& mesh, MeshFormat format, const std::filesystem::path& output,
-                     const ByteWriter& write);
+                     const ByteWriter& write, unsigned threads = 1);
 
 // How an OBJ written at `output` names the material library `library`: relative to the output's
 // folder (links resolved; the library's absolute path where there is no relative one). Empty when
