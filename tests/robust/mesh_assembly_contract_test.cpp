@@ -81,7 +81,7 @@ TEST(MeshAssembly, EdgeUsesAreThoseOfSortingByEdgeThenTriangle) {
 // The checks that let the repairs skip their walks say what the soups hold, on any number of
 // threads (more than the edges too): one closed tetrahedron, two touching at a vertex (two closed
 // fans there), a bowtie (two open fans), a strip, a flipped neighbour, a fin (three triangles on
-// an edge).
+// an edge), a duplicate triangle.
 TEST(MeshAssembly, RepairChecksFindWhatTheRepairsWouldRepair) {
   using T = std::vector<io::Triangle>;
   const T tetra = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
@@ -91,6 +91,10 @@ TEST(MeshAssembly, RepairChecksFindWhatTheRepairsWouldRepair) {
   }
   const T bowtie = {{0, 1, 2}, {0, 3, 4}}, strip = {{0, 1, 2}, {2, 1, 3}, {2, 3, 4}};
   const T flipped = {{0, 1, 2}, {1, 2, 3}}, fin = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  // A duplicate (the same corners in the same cyclic order) always makes a non-manifold edge,
+  // which is why loading looks for duplicates only then; the same corners the other way round
+  // are two sides of a closed surface.
+  const T duplicate = {{0, 1, 2}, {1, 2, 0}}, two_sided = {{0, 1, 2}, {0, 2, 1}};
   struct Case {
     const char* name;
     T triangles;
@@ -101,7 +105,9 @@ TEST(MeshAssembly, RepairChecksFindWhatTheRepairsWouldRepair) {
                         {"bowtie", bowtie, false, false, true},
                         {"strip", strip, false, false, false},
                         {"flipped neighbour", flipped, true, true, false},
-                        {"fin", fin, false, true, false}};
+                        {"fin", fin, false, true, false},
+                        {"duplicate", duplicate, true, true, false},
+                        {"two-sided triangle", two_sided, false, false, false}};
   for (const auto& c : cases) {
     for (const unsigned threads : {1u, 2u, 3u, 64u}) {
       SCOPED_TRACE(std::string(c.name) + ", threads " + std::to_string(threads));

@@ -306,16 +306,15 @@ std::size_t count_duplicate_positions(const std::vector<Point>& positions) {
   return static_cast<std::size_t>(std::count(duplicate.begin(), duplicate.end(), 1));
 }
 
-// Orients the triangles, marks those to keep apart and splits the vertices where closed fans
-// touch (counted in `report`); returns the marks. One EdgeUses serves all three (flips keep the
-// edges); it is handed on in `uses` when it still describes the triangles (no vertex split),
-// else freed before the mesh is assembled.
 std::vector<char> make_consistent(std::vector<Triangle>& triangles, std::vector<Triangle>& corners,
                                   std::vector<Point>& positions, std::vector<int>& origin,
-                                  LoadReport& report, EdgeUses& uses, unsigned threads) {
-  uses = EdgeUses(triangles, threads);
-  report.faces_flipped = orient_consistently(triangles, corners, uses, threads);
-  std::vector<char> detached = detach_non_manifold(uses, triangles.size(), threads);
+                                  LoadReport& report, EdgeUses& uses, bool manifold_edges,
+                                  unsigned threads) {
+  report.faces_flipped =
+      manifold_edges ? 0 : orient_consistently(triangles, corners, uses, threads);
+  std::vector<char> detached = manifold_edges
+                                   ? huge_page_vector(triangles.size(), char{0})
+                                   : detach_non_manifold(uses, triangles.size(), threads);
   report.vertices_split = split_closed_fans(triangles, uses, detached, positions, origin, threads);
   if (report.vertices_split) uses = EdgeUses();
   return detached;

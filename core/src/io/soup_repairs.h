@@ -21,12 +21,15 @@ std::size_t drop_duplicate_triangles(std::vector<Triangle>& triangles, std::vect
 std::size_t count_duplicate_positions(const std::vector<Point>& positions);
 
 // Orients the triangles, marks those to keep apart and splits the vertices where closed fans
-// touch (counted in `report`); returns the marks. One EdgeUses serves all three (flips keep the
-// edges); it is handed on in `uses` when it still describes the triangles (no vertex split),
-// else freed before the mesh is assembled. The uses are made, and whether each repair has anything
-// to do decided, on `threads` threads (repair_checks.h); the result is the same on any number.
+// touch (counted in `report`); returns the marks. `uses` are the triangles' EdgeUses, and serve
+// all three (flips keep the edges); they are handed back when they still describe the triangles
+// (no vertex split), else freed before the mesh is assembled. `manifold_edges`: no edge is used
+// more than twice or twice the same way (any_non_manifold_edge, which the caller knows): then
+// nothing is flipped or detached. Whether each repair has anything to do is decided on `threads`
+// threads (repair_checks.h); the result is the same on any number.
 std::vector<char> make_consistent(std::vector<Triangle>& triangles, std::vector<Triangle>& corners,
                                   std::vector<Point>& positions, std::vector<int>& origin,
-                                  LoadReport& report, EdgeUses& uses, unsigned threads = 1);
+                                  LoadReport& report, EdgeUses& uses, bool manifold_edges,
+                                  unsigned threads = 1);
 
 }  // namespace holefill::io
