@@ -67,6 +67,26 @@ TEST(CancelInPhase, IndexingFacesStopsFillHolesWithTheMeshUnchanged) {
   EXPECT_EQ(find_holes(mesh).size(), 1u);
 }
 
+// A single hole is filled in the mesh itself (fill_groups): a cancel in any of its stages leaves
+// the mesh as it was, as when its patch was made apart from the mesh.
+TEST(CancelInPhase, AnyStageStopsFillHolesOfOneHoleWithTheMeshUnchanged) {
+  for (const auto phase :
+       {phase::kTriangulating, phase::kRefining, phase::kSmoothing, phase::kChecking}) {
+    Mesh mesh = sphere_with_a_cap_off();
+    const std::vector<Point> before = vertex_positions(mesh);
+    const std::size_t faces = mesh.n_faces();
+    CancelInPhase cancel(phase);
+    FillOptions options;
+    options.triangulate.progress = &cancel.progress;
+    EXPECT_TRUE(fill_holes(mesh, find_holes(mesh), options, {}, &cancel.progress).empty());
+    EXPECT_NE(std::find(cancel.entered_phases.begin(), cancel.entered_phases.end(), phase),
+              cancel.entered_phases.end());
+    EXPECT_EQ(mesh.n_faces(), faces) << phase;
+    EXPECT_EQ(vertex_positions(mesh), before) << phase;
+    EXPECT_EQ(find_holes(mesh).size(), 1u) << phase;
+  }
+}
+
 TEST(CancelInPhase, IndexingFacesFilesNoFaceOnceCancelled) {
   const Mesh mesh = sphere_with_a_cap_off();
   const std::vector<detail::Box> regions{

@@ -180,5 +180,33 @@ TEST(FillThreads, PatchesMadeApartAreThoseMadeInTheMesh) {
   EXPECT_EQ(fingerprint(in_place), fingerprint(apart));
 }
 
+// One large hole (its refined patch has several blocks of triangles to check and measure) is
+// filled in the mesh itself, on every thread for its own stages: on 1, 2, 3 and more threads than
+// blocks it gives the mesh and the fill that fill_joined_holes gives, bit for bit.
+TEST(FillThreads, OneLargeHoleOnAnyThreadsIsFilledAsInPlace) {
+  const Mesh before = without_faces(
+      make_grid(200, [](double x, double y) { return 0.1 * std::sin(5.0 * x + 3.0 * y); }),
+      [](const Point& c) { return (c - Point(0.5, 0.5, c[2])).norm() < 0.3; });
+  const auto holes = find_holes(before);
+  ASSERT_EQ(holes.size(), 2u);  // the grid's border, and the hole
+  const auto largest = std::max_element(
+      holes.begin(), holes.end(), [](const Hole& a, const Hole& b) { return a.size() < b.size(); });
+  const Hole& hole = holes[largest == holes.begin() ? 1 : 0];
+  Mesh in_place = before;
+  const HoleFill expected = fill_joined_holes(in_place, {&hole}, FillOptions{});
+  ASSERT_GT(expected.patch.faces.size(), 3u * 4096u);
+  HoleSelection selection;
+  selection.hole_ids = {hole.id};
+  for (const unsigned threads : {1u, 2u, 3u, 1000u}) {
+    Mesh mesh = before;
+    FillOptions options;
+    options.threads = threads;
+    const auto fills = fill_holes(mesh, holes, options, selection);
+    ASSERT_EQ(fills.size(), 1u);
+    EXPECT_EQ(described(fills[0]), described(expected)) << threads << " threads";
+    EXPECT_EQ(fingerprint(mesh), fingerprint(in_place)) << threads << " threads";
+  }
+}
+
 }  // namespace
 }  // namespace holefill::testing
