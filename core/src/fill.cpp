@@ -82,7 +82,7 @@ std::size_t intersections_of(const Mesh& mesh, const Patch& patch,
 std::string stage_problem(const Mesh& mesh, const HoleFill& fill,
                           const detail::MeshFaceIndex* index, const FillOptions& options,
                           std::size_t& intersections) {
-  if (detail::has_degenerate_face(mesh, fill.patch)) {
+  if (detail::has_degenerate_face(mesh, fill.patch, index ? index->threads() : 1)) {
     return "it made a degenerate (zero-area) triangle";
   }
   intersections = intersections_of(mesh, fill.patch, index, options);

@@ -61,4 +61,13 @@ void for_each_index(std::size_t count, unsigned threads, Work&& work) {
   for_each_index(count, threads, std::forward<Work>(work), [] { return false; });
 }
 
+// Calls work(begin, end, block) for the consecutive blocks [begin, end) of `per_block` indices
+// that cover [0, count), on up to `threads` threads, as for_each_index calls work(i).
+template <class Work>
+void for_each_block(std::size_t count, std::size_t per_block, unsigned threads, Work&& work) {
+  for_each_index((count + per_block - 1) / per_block, threads, [&](std::size_t block) {
+    work(block * per_block, std::min(count, (block + 1) * per_block), block);
+  });
+}
+
 }  // namespace holefill::detail

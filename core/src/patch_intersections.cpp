@@ -23,7 +23,7 @@ double scale_for(double magnitude) {
 // Patch triangles scanned by one task when a large patch is checked on several threads; faces
 // gathered or scaled by one task before.
 constexpr int kTrianglesPerBlock = 4096;
-constexpr std::size_t kFacesPerBlock = 16384;
+constexpr std::size_t kCandidatesPerBlock = 16384;
 
 Box box_of_corners(const std::array<Point, 3>& corners) {
   Box box;
@@ -79,47 +79,47 @@ std::optional<Candidates> candidates_of(const Mesh& mesh, const Mesh& others,
     if (!box.overlaps(reach)) return std::nullopt;
     return std::pair(f, box);
   };
-  const std::size_t blocks = blocks_of(count, kFacesPerBlock);
+  const std::size_t blocks = blocks_of(count, kCandidatesPerBlock);
   std::vector<std::size_t> block_start(blocks + 1, 0);
-  for_each_index(blocks, threads, [&](std::size_t block) {
-    for (std::size_t i = block * kFacesPerBlock; i < std::min(count, (block + 1) * kFacesPerBlock);
-         ++i) {
-      if (stop_at(i, progress)) return;
-      if (other_face(i)) ++block_start[block + 1];
-    }
-  });
+  for_each_block(count, kCandidatesPerBlock, threads,
+                 [&](std::size_t begin, std::size_t end, std::size_t block) {
+                   for (std::size_t i = begin; i < end; ++i) {
+                     if (stop_at(i, progress)) return;
+                     if (other_face(i)) ++block_start[block + 1];
+                   }
+                 });
   if (is_cancelled(progress)) return std::nullopt;
   block_start[0] = triangles.size();
   for (std::size_t block = 0; block < blocks; ++block) block_start[block + 1] += block_start[block];
   c.faces.resize(block_start.back());
   c.boxes.resize(block_start.back());
-  for_each_index(blocks, threads, [&](std::size_t block) {
-    std::size_t at = block_start[block];
-    for (std::size_t i = block * kFacesPerBlock; i < std::min(count, (block + 1) * kFacesPerBlock);
-         ++i) {
-      if (const auto found = other_face(i)) {
-        c.faces[at] = found->first;
-        c.boxes[at] = {static_cast<int>(at), found->second};
-        ++at;
-      }
-    }
-  });
+  for_each_block(count, kCandidatesPerBlock, threads,
+                 [&](std::size_t begin, std::size_t end, std::size_t block) {
+                   std::size_t at = block_start[block];
+                   for (std::size_t i = begin; i < end; ++i) {
+                     if (const auto found = other_face(i)) {
+                       c.faces[at] = found->first;
+                       c.boxes[at] = {static_cast<int>(at), found->second};
+                       ++at;
+                     }
+                   }
+                 });
   double magnitude = 0.0;
   for (const auto& [id, box] : c.boxes) magnitude = std::max(magnitude, box.magnitude());
   const double scale = scale_for(magnitude);
   c.scaled.resize(c.faces.size());
-  for_each_index(blocks_of(c.faces.size(), kFacesPerBlock), threads, [&](std::size_t block) {
-    for (std::size_t o = block * kFacesPerBlock;
-         o < std::min(c.faces.size(), (block + 1) * kFacesPerBlock); ++o) {
-      if (o < triangles.size()) {
-        c.scaled[o] = triangle_from(triangles[o], scale);
-        continue;
-      }
-      auto fv = others.cfv_iter(c.faces[o]);
-      c.scaled[o] =
-          triangle_from({others.point(*fv), others.point(*++fv), others.point(*++fv)}, scale);
-    }
-  });
+  for_each_block(c.faces.size(), kCandidatesPerBlock, threads,
+                 [&](std::size_t begin, std::size_t end, std::size_t) {
+                   for (std::size_t o = begin; o < end; ++o) {
+                     if (o < triangles.size()) {
+                       c.scaled[o] = triangle_from(triangles[o], scale);
+                       continue;
+                     }
+                     auto fv = others.cfv_iter(c.faces[o]);
+                     c.scaled[o] = triangle_from(
+                         {others.point(*fv), others.point(*++fv), others.point(*++fv)}, scale);
+                   }
+                 });
   return c;
 }
 
@@ -245,13 +245,16 @@ std::vector<IntersectingPair> patch_intersections(const Mesh& mesh, const Patch&
   // A set over the patch's faces, not a flag per face of the mesh: this runs after every stage of
   // every hole, and on a 10M-face mesh clearing and faulting in those flags was most of a fill.
   const PatchFaceSet in_patch(patch);
-  std::vector<std::array<Point, 3>> triangles;
-  for (const auto f : patch.faces) {
-    std::array<Point, 3> t;
-    int c = 0;
-    for (const auto v : mesh.fv_range(f)) t[c++ % 3] = mesh.point(v);
-    triangles.push_back(t);
-  }
+  std::vector<std::array<Point, 3>> triangles(patch.faces.size());
+  for_each_block(triangles.size(), kCandidatesPerBlock, around ? around->threads() : 1,
+                 [&](std::size_t begin, std::size_t end, std::size_t) {
+                   for (std::size_t t = begin; t < end; ++t) {
+                     int c = 0;
+                     for (const auto v : mesh.fv_range(patch.faces[t])) {
+                       triangles[t][c++ % 3] = mesh.point(v);
+                     }
+                   }
+                 });
   return triangle_intersections(mesh, triangles, &in_patch, around, exact_too, progress);
 }
 

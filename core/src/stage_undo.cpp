@@ -1,12 +1,20 @@
 #include "stage_undo.h"
 
 #include <algorithm>
+#include <atomic>
 
 #include "deletion_flags.h"
 #include "geometry.h"
 #include "holefill/triangulate.h"
+#include "parallel_indices.h"
 
 namespace holefill::detail {
+namespace {
+
+// Faces looked at by one task when a large patch is looked at on several threads.
+constexpr std::size_t kDegeneracyFacesPerBlock = 8192;
+
+}  // namespace
 
 bool patch_is_newest(const Mesh& mesh, const Patch& patch) {
   const int first_face = static_cast<int>(mesh.n_faces() - patch.faces.size());
@@ -31,14 +39,21 @@ bool patch_is_newest(const Mesh& mesh, const Patch& patch) {
   return oldest_interior_edge >= static_cast<int>(mesh.n_edges() - interior_halfedges / 2);
 }
 
-bool has_degenerate_face(const Mesh& mesh, const Patch& patch) {
-  for (const auto f : patch.faces) {
-    std::array<Point, 3> p;
-    int c = 0;
-    for (const auto v : mesh.fv_range(f)) p[c++ % 3] = mesh.point(v);
-    if (geometry::measure_triangle(p[0], p[1], p[2], false).degenerate) return true;
-  }
-  return false;
+bool has_degenerate_face(const Mesh& mesh, const Patch& patch, unsigned threads) {
+  std::atomic<bool> found{false};
+  for_each_block(patch.faces.size(), kDegeneracyFacesPerBlock, threads,
+                 [&](std::size_t begin, std::size_t end, std::size_t) {
+                   for (std::size_t i = begin; i < end && !found.load(std::memory_order_relaxed);
+                        ++i) {
+                     std::array<Point, 3> p;
+                     int c = 0;
+                     for (const auto v : mesh.fv_range(patch.faces[i])) p[c++ % 3] = mesh.point(v);
+                     if (geometry::measure_triangle(p[0], p[1], p[2], false).degenerate) {
+                       found = true;
+                     }
+                   }
+                 });
+  return found;
 }
 
 StageUndo::StageUndo(const Mesh& mesh, const Patch& patch) : patch_(patch) {

@@ -15,8 +15,9 @@ namespace holefill::detail {
 // that deleting them and collecting garbage moves no other element.
 bool patch_is_newest(const Mesh& mesh, const Patch& patch);
 
-// Whether some face of the patch is degenerate (zero area, measure_triangle's test).
-bool has_degenerate_face(const Mesh& mesh, const Patch& patch);
+// Whether some face of the patch is degenerate (zero area, measure_triangle's test); a large
+// patch's faces looked at in blocks on up to `threads` threads.
+bool has_degenerate_face(const Mesh& mesh, const Patch& patch, unsigned threads = 1);
 
 // What a stage can be undone to: the patch's triangles and vertices as they are now, or, when
 // the patch is not the newest part of the mesh (a viewer stepping holes in turn), the whole mesh.

@@ -44,14 +44,11 @@ Point face_normal(const Mesh& mesh, FaceHandle f, int exponent) {
 }
 
 // Faces (or vertices) measured by one task when a patch is measured on several threads.
-constexpr std::size_t kPerBlock = 4096;
+constexpr std::size_t kMeasuredPerBlock = 4096;
 
-// Calls measure(begin, end, block) for the blocks of [0, count) on up to `threads` threads.
 template <class Measure>
-void in_blocks(std::size_t count, unsigned threads, Measure&& measure) {
-  detail::for_each_index((count + kPerBlock - 1) / kPerBlock, threads, [&](std::size_t block) {
-    measure(block * kPerBlock, std::min(count, (block + 1) * kPerBlock), block);
-  });
+void measure_in_blocks(std::size_t count, unsigned threads, Measure&& measure) {
+  detail::for_each_block(count, kMeasuredPerBlock, threads, std::forward<Measure>(measure));
 }
 
 // Where each patch face lies in patch.faces (-1: not the patch's), by face index from the
@@ -79,28 +76,30 @@ class FacePositions {
 // The largest angle between the normals of two faces across an edge of a patch face (boundary
 // edges of the mesh left out): each edge once, from the patch face first in patch.faces when
 // both are the patch's. `normals` holds the patch faces' normals, in patch.faces' order.
-double max_dihedral(const Mesh& mesh, const Patch& patch, const std::vector<Point>& normals,
-                    int exponent, unsigned threads) {
+double largest_dihedral_angle(const Mesh& mesh, const Patch& patch,
+                              const std::vector<Point>& normals, int exponent, unsigned threads) {
   const FacePositions position(patch);
-  std::vector<double> block_max((patch.faces.size() + kPerBlock - 1) / kPerBlock, 0.0);
-  in_blocks(patch.faces.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t b) {
-    for (std::size_t p = begin; p < end; ++p) {
-      for (const auto h : mesh.fh_range(patch.faces[p])) {
-        const FaceHandle other = mesh.opposite_face_handle(h);
-        if (!other.is_valid()) continue;
-        const int q = position(other);
-        if (q >= 0 && static_cast<std::size_t>(q) < p) continue;  // measured from there
-        const Point across =
-            q >= 0 ? normals[static_cast<std::size_t>(q)] : face_normal(mesh, other, exponent);
-        // The edge's first halfedge's face first, as a walk over the edges takes them (the same
-        // bits whatever the compiler contracts).
-        const bool first = h == mesh.halfedge_handle(mesh.edge_handle(h), 0);
-        block_max[b] =
-            std::max(block_max[b], geometry::angle_between_normals(first ? normals[p] : across,
-                                                                   first ? across : normals[p]));
-      }
-    }
-  });
+  std::vector<double> block_max((patch.faces.size() + kMeasuredPerBlock - 1) / kMeasuredPerBlock,
+                                0.0);
+  measure_in_blocks(
+      patch.faces.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t b) {
+        for (std::size_t p = begin; p < end; ++p) {
+          for (const auto h : mesh.fh_range(patch.faces[p])) {
+            const FaceHandle other = mesh.opposite_face_handle(h);
+            if (!other.is_valid()) continue;
+            const int q = position(other);
+            if (q >= 0 && static_cast<std::size_t>(q) < p) continue;  // measured from there
+            const Point across =
+                q >= 0 ? normals[static_cast<std::size_t>(q)] : face_normal(mesh, other, exponent);
+            // The edge's first halfedge's face first, as a walk over the edges takes them (the same
+            // bits whatever the compiler contracts).
+            const bool first = h == mesh.halfedge_handle(mesh.edge_handle(h), 0);
+            block_max[b] = std::max(block_max[b],
+                                    geometry::angle_between_normals(first ? normals[p] : across,
+                                                                    first ? across : normals[p]));
+          }
+        }
+      });
   double largest = 0.0;
   for (const double value : block_max) largest = std::max(largest, value);
   return largest;
@@ -119,15 +118,15 @@ PatchStats patch_stats(const Mesh& mesh, const Patch& patch, unsigned threads) {
   stats.new_faces = patch.faces.size();
   const std::size_t faces = patch.faces.size();
   std::vector<int> valences(patch.new_vertices.size());
-  in_blocks(valences.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
+  measure_in_blocks(valences.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t) {
     for (std::size_t i = begin; i < end; ++i) {
       valences[i] = static_cast<int>(mesh.valence(patch.new_vertices[i]));
     }
   });
   for (const int valence : valences) ++stats.valence_histogram[valence];
 
-  std::vector<double> block_largest((faces + kPerBlock - 1) / kPerBlock, 0.0);
-  in_blocks(faces, threads, [&](std::size_t begin, std::size_t end, std::size_t b) {
+  std::vector<double> block_largest((faces + kMeasuredPerBlock - 1) / kMeasuredPerBlock, 0.0);
+  measure_in_blocks(faces, threads, [&](std::size_t begin, std::size_t end, std::size_t b) {
     for (std::size_t p = begin; p < end; ++p) {
       for (const auto v : mesh.fv_range(patch.faces[p])) {
         block_largest[b] =
@@ -141,7 +140,7 @@ PatchStats patch_stats(const Mesh& mesh, const Patch& patch, unsigned threads) {
 
   std::vector<double> min_angles(faces), areas(faces);
   std::vector<Point> normals(faces);
-  in_blocks(faces, threads, [&](std::size_t begin, std::size_t end, std::size_t) {
+  measure_in_blocks(faces, threads, [&](std::size_t begin, std::size_t end, std::size_t) {
     for (std::size_t p = begin; p < end; ++p) {
       auto fv = mesh.cfv_iter(patch.faces[p]);
       const Point a = scaled_down(mesh.point(*fv), exponent);
@@ -161,7 +160,8 @@ PatchStats patch_stats(const Mesh& mesh, const Patch& patch, unsigned threads) {
   }
   stats.min_angle_deg = min_angle * kDegrees;
   stats.mean_min_angle_deg = faces == 0 ? 0.0 : angle_sum / static_cast<double>(faces) * kDegrees;
-  stats.max_dihedral_deg = max_dihedral(mesh, patch, normals, exponent, threads) * kDegrees;
+  stats.max_dihedral_deg =
+      largest_dihedral_angle(mesh, patch, normals, exponent, threads) * kDegrees;
   return stats;
 }
 
