@@ -351,7 +351,8 @@ Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
     uses = EdgeUses();
   }
   std::vector<char>().swap(detached);  // not held while the mesh's arrays grow
-  if (uses.empty()) uses = EdgeUses(triangles);
+  const bool two = use_two_threads(triangles.size(), two_threads_from);
+  if (uses.empty()) uses = EdgeUses(triangles, two ? 2 : 1);
   std::vector<std::uint8_t> first_corner_rank = huge_page_vector(triangles.size(), std::uint8_t{0});
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     first_corner_rank[t] = rank_of_first_corner(triangles[t]);
@@ -373,7 +374,7 @@ Mesh assemble(std::vector<Point> positions, std::vector<Triangle> triangles,
   }
   mesh.resize(mesh.n_vertices(), 0, first_corner_rank.size());
   add_edges(mesh, std::move(uses), edges);
-  link_faces(mesh, first_corner_rank, use_two_threads(mesh.n_faces(), two_threads_from));
+  link_faces(mesh, first_corner_rank, two);
   link_boundaries(mesh);
   for (std::size_t v = 0; v < original_vertices; ++v) {
     if (mesh.is_isolated(VertexHandle(static_cast<int>(v)))) ++report.isolated_vertices;
