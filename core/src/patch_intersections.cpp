@@ -20,9 +20,11 @@ double scale_for(double magnitude) {
   return std::ldexp(1.0, -std::clamp(std::ilogb(magnitude), -1000, 1000));
 }
 
-// Patch triangles scanned by one task when a large patch is checked on several threads; faces
-// gathered or scaled by one task before.
-constexpr int kTrianglesPerBlock = 4096;
+// Patch triangles scanned by one task when a patch is checked on several threads (a millisecond
+// or two of work: small enough that the last blocks leave no thread long alone, and that a
+// triangulated hole of a thousand edges is scanned on two); faces gathered or scaled by one task
+// before.
+constexpr int kTrianglesPerBlock = 512;
 constexpr std::size_t kCandidatesPerBlock = 16384;
 
 Box box_of_corners(const std::array<Point, 3>& corners) {

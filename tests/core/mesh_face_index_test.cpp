@@ -161,7 +161,7 @@ TEST(MeshFaceIndex, AViewFindsWhatItsWholeFindsInsideItsRegionOnly) {
   EXPECT_EQ(&view.mesh(), &mesh);
 }
 
-// A patch of thousands of triangles (three blocks) over a grid of 20,000 faces (two blocks of
+// A patch of thousands of triangles (many blocks) over a grid of 20,000 faces (two blocks of
 // faces to gather, several chunks of the grid's cells) checked on several threads gives the pairs
 // of one thread, in the same order.
 TEST(MeshFaceIndex, ALargePatchIsCheckedInBlocksWithTheOneThreadPairs) {
