@@ -58,8 +58,9 @@ bool start_open(Worker& worker, Session& session, FileActions& files,
   // finishing step: a cancel sets it aside at once, however long the file takes to read.
   return worker.start(
       kOpening + path.filename().string(),
-      [&session, &files, path](Progress& progress) {
+      [&session, &files, path, threads = session.threads()](Progress& progress) {
         auto opened = std::make_shared<Session>();
+        opened->set_threads(threads);
         const bool read = opened->open(path, &progress);
         return [&session, &files, opened, read, path] {
           if (!read) {

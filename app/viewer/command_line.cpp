@@ -91,6 +91,13 @@ void add_options(CLI::App& app, Parsed& parsed) {
                  "text and panel scale (default: the monitor's;\nCtrl +/- change it)")
       ->type_name("S")
       ->check(CLI::Range(0.5f, 4.0f));
+  app.add_option("--threads", c.threads,
+                 "threads that open, prepare and fill meshes (0: every core\nthis process may "
+                 "run on, below the window's priority);\nthe result is the same whatever the "
+                 "number")
+      ->type_name("N")
+      ->check(CLI::Range(0u, 4096u))
+      ->capture_default_str();
   app.add_option("--frames", c.frames,
                  "with --screenshot: render N frames (turning the view\na little each) and print "
                  "the mean frame time: the first\nhalf whole, the second as a drag draws them "

@@ -33,6 +33,7 @@ struct CommandLine {
   int frames = 4;                    // frames scripted mode renders before the screenshot
   bool report_frame_time = false;    // print the mean frame time (set by --frames)
   float ui_scale = 0.0f;             // the panel's scale; 0: the monitor's content scale
+  unsigned threads = 0;              // Session::set_threads: the worker's (0: every core)
   std::filesystem::path state_file;  // set: the window's state is written here (state_report.h)
   bool help = false;
   bool version = false;

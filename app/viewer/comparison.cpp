@@ -4,19 +4,22 @@ namespace holefill::viewer {
 namespace {
 
 ComparisonSide fill_side(const Mesh& mesh, const std::vector<const Hole*>& loops,
-                         const FillOptions& options, std::string label) {
+                         const FillOptions& options, std::string label, unsigned threads) {
   ComparisonSide side;
   side.label = std::move(label);
   side.options = options;
   side.mesh = mesh;
-  side.fill = fill_joined_holes(side.mesh, loops, options);
+  FillOptions run = options;
+  run.threads = threads;
+  side.fill = fill_joined_holes(side.mesh, loops, run);
   return side;
 }
 
 }  // namespace
 
 Comparison make_comparison(const Mesh& mesh, const std::vector<const Hole*>& loops,
-                           const FillOptions& options, CompareMode mode, bool triangulation_only) {
+                           const FillOptions& options, CompareMode mode, bool triangulation_only,
+                           unsigned threads) {
   Comparison comparison;
   comparison.hole_id = loops.front()->id;
   comparison.mode = mode;
@@ -38,8 +41,8 @@ Comparison make_comparison(const Mesh& mesh, const std::vector<const Hole*>& loo
   static constexpr const char* kLabels[][2] = {
       {"liepa", "maxmin"}, {"umbrella", "fair"}, {"paper", "creases"}};
   const auto labels = kLabels[static_cast<int>(mode)];
-  comparison.left = fill_side(mesh, loops, left, labels[0]);
-  comparison.right = fill_side(mesh, loops, right, labels[1]);
+  comparison.left = fill_side(mesh, loops, left, labels[0], threads);
+  comparison.right = fill_side(mesh, loops, right, labels[1], threads);
   return comparison;
 }
 

@@ -34,7 +34,9 @@ struct Comparison {
 // Smoothing: both run every stage (the smoothing is what differs), with options.smooth's
 // fairing settings on the right. Features: every stage, without sharp features on the left and
 // with options.features (its default threshold when off) on the right. `loops` is not empty.
+// Both fill on `threads` threads (FillOptions::threads; the sides' options keep options').
 Comparison make_comparison(const Mesh& mesh, const std::vector<const Hole*>& loops,
-                           const FillOptions& options, CompareMode mode, bool triangulation_only);
+                           const FillOptions& options, CompareMode mode, bool triangulation_only,
+                           unsigned threads = 0);
 
 }  // namespace holefill::viewer

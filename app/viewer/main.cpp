@@ -89,6 +89,7 @@ std::optional<int> run_without_window(const hv::CommandLine& command, hv::Sessio
 int run(const hv::CommandLine& command, const char* executable) {
   const auto started = std::chrono::steady_clock::now();
   hv::Session session;
+  session.set_threads(command.threads);
   hv::FileActions files(session);
   hv::Worker worker;
   const auto mesh_path = command.mesh.empty() ? hv::default_mesh_path(executable) : command.mesh;

@@ -14,6 +14,7 @@
 #include "disabled_reasons.h"
 #include "hole_list_panel.h"
 #include "palette.h"
+#include "settings_panel.h"
 #include "status_bar.h"
 #include "valence_bins.h"
 #include "widgets.h"
@@ -480,6 +481,7 @@ void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& 
   }
   ImGui::Separator();
   display_section(ui);
+  threads_setting(session, worker);
   ImGui::EndChild();
   draw_status_bar(session, ui.notices);
   ImGui::End();

@@ -1,9 +1,9 @@
 // The ImGui side panel: Open, Save, Save As, the hole list, fill options, the stage buttons,
-// undo/redo, patch statistics with valence histograms, the comparison, display toggles and the
-// screenshot button, over a status bar of fixed height at the bottom (the last message, with its
-// history) so that no message moves a control. It calls the session for every action and leaves
-// requests that need the camera or the framebuffer (frame, fit, screenshot) in UiState for the
-// frame loop.
+// undo/redo, patch statistics with valence histograms, the comparison, display toggles, the
+// screenshot button and the threads the work runs on, over a status bar of fixed height at the
+// bottom (the last message, with its history) so that no message moves a control. It calls the
+// session for every action and leaves requests that need the camera or the framebuffer (frame, fit,
+// screenshot) in UiState for the frame loop.
 #pragma once
 
 #include <optional>

@@ -95,7 +95,8 @@ std::vector<const Hole*> loops_of(const std::vector<Hole>& holes, int hole_id,
 
 bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& step,
               Checkpoints* checkpoints, Progress* progress,
-              const std::shared_ptr<const MeshState>& unchanged, FillSequence* sequence) {
+              const std::shared_ptr<const MeshState>& unchanged, FillSequence* sequence,
+              unsigned threads) {
   const bool followed = checkpoints && checkpoints->hole_id == step.hole_id;
   // The state before this step, unless it is kept already (states[k] precedes steps[k]).
   if (followed && checkpoints->states.size() == checkpoints->steps.size() &&
@@ -104,6 +105,7 @@ bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& 
   }
   FillOptions options = step.options;
   options.triangulate.progress = progress;
+  options.threads = threads;
   const std::vector<const Hole*> loops = loops_of(holes, step.hole_id, step.joined);
   HoleFill& fill = state.fills[step.hole_id];
   const bool ran = (sequence ? sequence->step(loops, fill, options)
@@ -114,7 +116,8 @@ bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& 
 
 std::optional<Rebuilt> rebuild(const std::shared_ptr<const MeshState>& loaded,
                                const std::vector<Hole>& holes, const std::vector<FillStep>& log,
-                               int hole_id, const Checkpoints& saved, Progress* progress) {
+                               int hole_id, const Checkpoints& saved, Progress* progress,
+                               unsigned threads) {
   Rebuilt result;
   std::vector<FillStep> to_run;
   const bool last = hole_id >= 0 && steps_come_last(log, hole_id);
@@ -147,7 +150,7 @@ std::optional<Rebuilt> rebuild(const std::shared_ptr<const MeshState>& loaded,
     // A replay from the loaded mesh keeps that mesh, shared, as the state before its first step.
     const bool from_loaded = i == 0 && result.checkpoints.states.empty();
     run_step(result.state, holes, to_run[i], &result.checkpoints, progress,
-             from_loaded ? loaded : nullptr, &sequence);
+             from_loaded ? loaded : nullptr, &sequence, threads);
     if (progress) progress->set_fraction(static_cast<double>(i + 1) / to_run.size());
   }
   if (progress && progress->cancelled()) return std::nullopt;

@@ -69,11 +69,12 @@ Checkpoints continue_checkpoints(const Checkpoints& saved, const std::vector<Fil
 // where the caller has it (a kept state equal to `state`, shared instead of copied: a mesh of a
 // million faces is about 100 MB), else a copy. Returns whether the stage ran.
 // With `sequence` (over state.mesh), the step runs through it (fill_sequence.h: the same result,
-// without looking at the whole mesh at every step).
+// without looking at the whole mesh at every step). It runs on `threads` threads
+// (FillOptions::threads, whatever the step logged: the result is the same).
 bool run_step(MeshState& state, const std::vector<Hole>& holes, const FillStep& step,
               Checkpoints* checkpoints, Progress* progress,
               const std::shared_ptr<const MeshState>& unchanged = nullptr,
-              FillSequence* sequence = nullptr);
+              FillSequence* sequence = nullptr, unsigned threads = 0);
 
 // The loops a step of `hole_id` with `joined` fills: the hole first, then the joined ones.
 std::vector<const Hole*> loops_of(const std::vector<Hole>& holes, int hole_id,
@@ -87,10 +88,12 @@ struct Rebuilt {
 // The state `log` makes from `loaded` (the mesh as loaded, no fills; kept as the first
 // checkpoint when the log's first step is the hole's): from saved's states where they apply (the
 // log's steps of saved.hole_id come last, its other steps are saved.others, and the first steps
-// have the same options for their stage), else every step from the loaded mesh. Reports the share
-// of the steps run and returns nothing once `progress` is cancelled.
+// have the same options for their stage), else every step from the loaded mesh, on `threads`
+// threads (run_step). Reports the share of the steps run and returns nothing once `progress` is
+// cancelled.
 std::optional<Rebuilt> rebuild(const std::shared_ptr<const MeshState>& loaded,
                                const std::vector<Hole>& holes, const std::vector<FillStep>& log,
-                               int hole_id, const Checkpoints& saved, Progress* progress);
+                               int hole_id, const Checkpoints& saved, Progress* progress,
+                               unsigned threads = 0);
 
 }  // namespace holefill::viewer

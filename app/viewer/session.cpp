@@ -43,10 +43,12 @@ bool Session::open(const std::filesystem::path& path, Progress* progress) {
   };
   try {
     LoadReport report;
-    Mesh mesh = load_mesh(path, &report);
+    Mesh mesh = load_mesh(path, &report, threads_);
     if (!go_on(0.6)) return false;
     // The command-line tool's preparation, with its defaults (holefill/prepare.h).
-    PreparedMesh prepared = prepare_mesh(mesh);
+    PrepareOptions preparation;
+    preparation.threads = threads_;
+    PreparedMesh prepared = prepare_mesh(mesh, preparation);
     if (!go_on(0.9)) return false;
     std::string text = "Opened " + path.string();
     for (const auto& warning : report.warnings) text += "\n" + warning;
@@ -63,6 +65,7 @@ bool Session::open(const std::filesystem::path& path, Progress* progress) {
 void Session::load(Mesh mesh, std::string name) {
   PrepareOptions as_it_is;
   as_it_is.stitch = false;
+  as_it_is.threads = threads_;
   PreparedMesh prepared = prepare_mesh(mesh, as_it_is);
   adopt(std::move(mesh), std::move(name), std::move(prepared));
 }
@@ -236,8 +239,9 @@ std::optional<FillResult> Session::compute(const FillRequest& request, Progress*
           make_step(id, joined == request.joined.end() ? std::vector<int>{} : joined->second,
                     request.options);
       // Until a step runs, the state is the session's own, which the checkpoints may share.
-      const bool ran = run_step(result.state, holes_, step, &result.checkpoints, progress,
-                                result.log.size() == log_.size() ? state_ : nullptr, &sequence);
+      const bool ran =
+          run_step(result.state, holes_, step, &result.checkpoints, progress,
+                   result.log.size() == log_.size() ? state_ : nullptr, &sequence, threads_);
       if (progress && progress->cancelled()) return std::nullopt;
       // A failed stage is logged too, so that replay shows the same failure in the hole list.
       if (ran || fill.failed()) result.log.push_back(step);
@@ -322,7 +326,8 @@ std::optional<LogChange> Session::keep_request(bool right) const {
 }
 
 std::optional<ChangeResult> Session::compute(const LogChange& change, Progress* progress) const {
-  auto rebuilt = rebuild(loaded_, holes_, change.log, change.selected, checkpoints_, progress);
+  auto rebuilt =
+      rebuild(loaded_, holes_, change.log, change.selected, checkpoints_, progress, threads_);
   if (!rebuilt) return std::nullopt;
   return ChangeResult{change, std::move(*rebuilt)};
 }
@@ -403,12 +408,12 @@ std::optional<ComparisonResult> Session::compute(const ComparisonRequest& reques
                                                  Progress* progress) const {
   // The hole as it is before its own steps: the log without them (kept, usually).
   const auto before = rebuild(loaded_, holes_, without_hole(log_, request.hole_id), request.hole_id,
-                              checkpoints_, progress);
+                              checkpoints_, progress, threads_);
   if (!before || (progress && progress->cancelled())) return std::nullopt;
   std::vector<const Hole*> loops{&holes_[request.hole_id]};
   for (const int id : request.joined) loops.push_back(&holes_[id]);
   return ComparisonResult{make_comparison(before->state.mesh, loops, request.options, request.mode,
-                                          request.triangulation_only),
+                                          request.triangulation_only, threads_),
                           request.generation};
 }
 

@@ -146,6 +146,13 @@ class Session {
   // line's --bridge). Empty when it can: fill_selected() then joins the two with one band.
   const std::string& bridge_problem() const { return bridge_problem_; }
 
+  // The threads that open, prepare and fill (load_mesh's, PrepareOptions::threads,
+  // FillOptions::threads; 0: every core this process may run on). The machine's business, not
+  // the fill's: no step logs it and a change re-runs nothing; every later open, step, replay and
+  // comparison runs on it. Set it only while no compute() runs (it reads it).
+  unsigned threads() const { return threads_; }
+  void set_threads(unsigned threads) { threads_ = threads; }
+
   // The options the next step uses. Setting them while the selected hole has been stepped
   // re-runs that hole's steps with the new options, so its statistics stay live (from the
   // first stage they change: τ re-runs refinement and smoothing, not the triangulation).
@@ -279,6 +286,7 @@ class Session {
   std::string bridge_problem_;
   IslandMap islands_;
   FillOptions options_;
+  unsigned threads_ = 0;
   Notice notice_;
   std::uint64_t mesh_version_ = 0;
   std::uint64_t valences_version_ = ~std::uint64_t{0};

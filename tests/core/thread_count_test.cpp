@@ -1,6 +1,7 @@
 // How many threads the library starts, counted where every thread starts (pthread_create,
 // thread_counter.h): a count of threads given to loading, preparing, filling and writing bounds
-// every stage of them, one thread starts none, and the full search asked to choose uses every core
+// every stage of them (through the library, `holefill info --threads`, a hole filled alone, the
+// viewer's setting), one thread starts none, and the full search asked to choose uses every core
 // this process may run on.
 #include <gtest/gtest.h>
 #include <sched.h>
@@ -12,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include "holefill/fill.h"
 #include "holefill/holes.h"
@@ -19,6 +21,9 @@
 #include "holefill/prepare.h"
 #include "holefill/triangulate.h"
 #include "run_cli.h"
+#ifdef HOLEFILL_TEST_VIEWER
+#include "session.h"
+#endif
 #include "test_meshes.h"
 #include "thread_counter.h"
 
@@ -147,6 +152,36 @@ TEST(ThreadCount, InfoReadsAndPreparesOnTheThreadsGiven) {
   // 7 x 7 small holes but the one inside the big hole, the big hole, the grid's border.
   EXPECT_NE(one.out.find(" 50 holes\n"), std::string::npos) << one.out;
 }
+
+#ifdef HOLEFILL_TEST_VIEWER
+TEST(ThreadCount, TheViewersSettingBoundsOpeningFillingAndReplaying) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() /
+      ("holefill-viewer-threads-" + std::to_string(getpid()) + ".obj");
+  std::ofstream(path, std::ios::binary) << rows_apart_obj(280);
+  // Opens, fills every hole but the grid's border, undoes (back to the mesh as loaded) and
+  // redoes (every step replayed from it).
+  const auto worked = [&](unsigned threads) {
+    viewer::Session session;
+    session.set_threads(threads);
+    reset_thread_counts();
+    EXPECT_TRUE(session.open(path)) << session.notice().text;
+    EXPECT_TRUE(session.fill_all(200)) << session.notice().text;
+    EXPECT_TRUE(session.undo());
+    EXPECT_TRUE(session.redo());
+    return std::pair{mesh_to_bytes(session.mesh(), "viewer.obj"), thread_counts()};
+  };
+  const auto [one, on_one] = worked(1);
+  EXPECT_EQ(on_one.started, 0u);
+  const auto [three, on_three] = worked(3);
+  std::filesystem::remove(path);
+  EXPECT_EQ(three, one);
+  EXPECT_GT(on_three.started, 0u);
+  EXPECT_LE(on_three.most_at_once, 2u);
+  // The holes were closed: the grid's border is the one loop left.
+  EXPECT_EQ(find_holes(load_mesh_from_memory(one, "one.obj")).size(), 1u);
+}
+#endif  // HOLEFILL_TEST_VIEWER
 
 TEST(ThreadCount, TheFullSearchLeftToChooseUsesEveryCoreOfTheProcess) {
   const HolePolygon polygon = wavy_hole(300);

@@ -27,6 +27,8 @@ TEST(CommandLine, ScriptedModeOptions) {
   EXPECT_EQ(parse_command_line({"--fair-order", "3"}).fair_order, 3);
   EXPECT_FLOAT_EQ(parse_command_line({}).ui_scale, 0.0f);  // the monitor's
   EXPECT_FLOAT_EQ(parse_command_line({"--ui-scale", "1.5"}).ui_scale, 1.5f);
+  EXPECT_EQ(parse_command_line({}).threads, 0u);  // every core
+  EXPECT_EQ(parse_command_line({"--threads", "3"}).threads, 3u);
   const CommandLine smoothing = parse_command_line({"--select-hole", "0", "--compare-smoothing"});
   EXPECT_TRUE(smoothing.compare && smoothing.compare_smoothing);
 }
@@ -40,6 +42,7 @@ TEST(CommandLine, RejectsWhatItCannotDo) {
   EXPECT_THROW(parse_command_line({"--bogus"}), std::invalid_argument);
   EXPECT_THROW(parse_command_line({"--fair-order", "4"}), std::invalid_argument);
   EXPECT_THROW(parse_command_line({"--ui-scale", "9"}), std::invalid_argument);
+  EXPECT_THROW(parse_command_line({"--threads", "-1"}), std::invalid_argument);
   EXPECT_TRUE(parse_command_line({"--help"}).help);
 }
 
