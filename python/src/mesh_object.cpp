@@ -51,12 +51,13 @@ std::unique_ptr<MeshObject> from_arrays(py::handle vertices, py::handle faces, p
   return object;
 }
 
-std::unique_ptr<MeshObject> load(const std::filesystem::path& path) {
+std::unique_ptr<MeshObject> load(const std::filesystem::path& path, unsigned threads) {
   LoadReport report;
   std::unique_ptr<MeshObject> object;
   {
     const py::gil_scoped_release release;
-    object = std::make_unique<MeshObject>([&] { return load_mesh(path, &report); }, path.string());
+    object = std::make_unique<MeshObject>([&] { return load_mesh(path, &report, threads); },
+                                          path.string());
   }
   warn_lines(lines_of(report.warnings, object->name));
   return object;
@@ -148,10 +149,15 @@ void bind_mesh(py::module_& module) {
         return "<holefill.Mesh " + object.name + ": " + std::to_string(object.mesh.n_vertices()) +
                " vertices, " + std::to_string(object.mesh.n_faces()) + " faces>";
       });
-  module.def("load", &load, py::arg("path"),
+  module.def("load", &load, py::arg("path"), py::kw_only(), py::arg("threads") = 0u,
              "Loads an OBJ, OFF, PLY or STL mesh with the attributes its file carries; what "
              "loading repaired or could not keep comes as a HolefillWarning each. Raises "
-             "holefill.Error when the file cannot be read as a mesh.");
+             "holefill.Error when the file cannot be read as a mesh. A big file is read on up "
+             "to `threads` threads (0: every core this process may run on), as fill's threads= "
+             "bounds preparing and filling: several loads or fills at once (Python threads: "
+             "they run without the GIL) should share the cores, e.g. threads=os.cpu_count() // "
+             "n each for n at once, or they run n x cores threads. The mesh is the same "
+             "whatever the number.");
 }
 
 }  // namespace holefill::python

@@ -97,3 +97,17 @@ def test_a_mesh_in_use_is_refused_to_other_threads():
 
     holefill.fill(mesh, progress=touch)
     assert refusals and "in use by another thread" in refusals[0]
+
+
+def test_load_takes_a_thread_count_and_reads_the_same_mesh_on_any(tmp_path):
+    # More than 8 MB of OBJ: big enough that loading reads it in halves on two threads.
+    path = tmp_path / "sphere.obj"
+    holefill.Mesh(*cut_sphere(240, 480, 6)).save(path)
+    assert os.path.getsize(path) > 8 << 20
+    one = holefill.load(path, threads=1)
+    for threads in (2, 3, 0):
+        other = holefill.load(path, threads=threads)
+        assert np.array_equal(other.vertices, one.vertices)
+        assert np.array_equal(other.faces, one.faces)
+    with pytest.raises(TypeError):
+        holefill.load(path, threads=-1)
