@@ -53,15 +53,16 @@ bool start_options(Worker& worker, Session& session, const FillOptions& options)
 }
 
 bool start_open(Worker& worker, Session& session, FileActions& files,
-                const std::filesystem::path& path) {
+                const std::filesystem::path& path, std::size_t remove_pieces_up_to) {
   // The job reads into a session of its own and touches `session` and `files` only in its
   // finishing step: a cancel sets it aside at once, however long the file takes to read.
   return worker.start(
       kOpening + path.filename().string(),
-      [&session, &files, path, threads = session.threads()](Progress& progress) {
+      [&session, &files, path, threads = session.threads(),
+       remove_pieces_up_to](Progress& progress) {
         auto opened = std::make_shared<Session>();
         opened->set_threads(threads);
-        const bool read = opened->open(path, &progress);
+        const bool read = opened->open(path, &progress, remove_pieces_up_to);
         return [&session, &files, opened, read, path] {
           if (!read) {
             session.tell(opened->notice());

@@ -29,10 +29,11 @@ bool start_options(Worker& worker, Session& session, const FillOptions& options)
 // none is asked for or the worker is busy.
 bool start_comparison(Worker& worker, Session& session);
 
-// Starts reading `path` into a new session; when done it replaces `session` and tells `files`
+// Starts reading `path` into a new session (on session's threads, without the pieces of at most
+// `remove_pieces_up_to` faces: Session::open); when done it replaces `session` and tells `files`
 // (opened), or, when the file cannot be read, leaves the session and shows why (notice).
 bool start_open(Worker& worker, Session& session, FileActions& files,
-                const std::filesystem::path& path);
+                const std::filesystem::path& path, std::size_t remove_pieces_up_to = 0);
 // Whether the worker is opening a mesh (start_open).
 bool opening(const Worker& worker);
 // What the status bar says once the worker's job is cancelled: "Filling hole 3: cancelled, mesh

@@ -49,7 +49,7 @@ void take_sort_order(HoleView& view) {
 std::string why_open(const Session& session, const HoleRow& row) {
   if (!row.failure.empty()) {
     return "Hole " + std::to_string(row.id) + ": " + row.failure +
-           (row.refused_intersections ? "; \"keep cutting patches\" keeps it" : "");
+           (row.remedy.empty() ? "" : "; " + row.remedy);
   }
   if (session.is_border(row.id) && row.status == HoleStatus::Open)
     return "Loop " + std::to_string(row.id) +

@@ -63,7 +63,11 @@ std::vector<HoleRow> hole_rows(const Session& session) {
     }
     row.intersecting = fill.self_intersections > 0;
     row.failure = fill.failed() ? fill.failure.message : session.islands().note[hole.id];
-    row.refused_intersections = fill.refused_intersections > 0;
+    if (fill.refused_intersections > 0) {
+      row.remedy = "\"keep cutting patches\" keeps it";
+    } else if (fill.failure.kind == FailureKind::VertexPassedTooOften) {
+      row.remedy = "\"Remove small pieces\" removes the pieces that meet there";
+    }
     rows.push_back(std::move(row));
   }
   return rows;

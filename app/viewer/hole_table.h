@@ -23,7 +23,10 @@ struct HoleRow {
   std::string stage;
   bool intersecting = false;  // the patch intersects the mesh
   std::string failure;        // why it failed or cannot be filled with its islands, for the tooltip
-  bool refused_intersections = false;  // left open because every patch tried cut the mesh
+  // What the panel offers against the failure, by its own controls' names (the core's message
+  // names none): "keep cutting patches" for a patch refused for cutting the mesh, "Remove small
+  // pieces" for a loop through one vertex too often. Empty when nothing helps.
+  std::string remedy;
 };
 
 enum class HoleColumn { Id, Edges, Perimeter, Area, Status };

@@ -482,6 +482,7 @@ void draw_panels(Session& session, FileActions& files, Worker& worker, UiState& 
   ImGui::Separator();
   display_section(ui);
   threads_setting(session, worker);
+  remove_pieces_button(session, files, worker);
   ImGui::EndChild();
   draw_status_bar(session, ui.notices);
   ImGui::End();

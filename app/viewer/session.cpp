@@ -35,7 +35,8 @@ std::string change_notice(LogChange::Kind kind, int selected) {
 
 }  // namespace
 
-bool Session::open(const std::filesystem::path& path, Progress* progress) {
+bool Session::open(const std::filesystem::path& path, Progress* progress,
+                   std::size_t remove_pieces_up_to) {
   // Whether to go on after a phase that took this share of the work.
   const auto go_on = [progress](double done) {
     if (progress) progress->set_fraction(done);
@@ -48,11 +49,17 @@ bool Session::open(const std::filesystem::path& path, Progress* progress) {
     // The command-line tool's preparation, with its defaults (holefill/prepare.h).
     PrepareOptions preparation;
     preparation.threads = threads_;
+    preparation.remove_pieces_up_to = remove_pieces_up_to;
     PreparedMesh prepared = prepare_mesh(mesh, preparation);
     if (!go_on(0.9)) return false;
     std::string text = "Opened " + path.string();
     for (const auto& warning : report.warnings) text += "\n" + warning;
-    for (const auto& line : prepared.messages) text += "\n" + line;
+    for (std::size_t i = 0; i < prepared.messages.size(); ++i) {
+      // The core names no control that removes the pieces: the panel's button does.
+      const bool pieces = static_cast<int>(i) == prepared.pieces_message;
+      text +=
+          "\n" + prepared.messages[i] + (pieces ? "; \"Remove small pieces\" removes them" : "");
+    }
     adopt(std::move(mesh), path.filename().string(), std::move(prepared));
     notice_ = {text, false};
     return true;
@@ -72,6 +79,7 @@ void Session::load(Mesh mesh, std::string name) {
 
 void Session::adopt(Mesh mesh, std::string name, PreparedMesh prepared) {
   name_ = std::move(name);
+  pieces_ = prepared.pieces;
   welds_ = prepared.weld;
   loaded_version_ = next_serial();
   holes_ = std::move(prepared.holes);

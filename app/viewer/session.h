@@ -94,8 +94,10 @@ class Session {
  public:
   // Opens a mesh file. On failure the current mesh stays and notice() says why. With `progress`:
   // reports the read (0.6) and the preparation (0.9) done, and once cancelled stops after the
-  // one under way (false, the session unchanged).
-  bool open(const std::filesystem::path& path, Progress* progress = nullptr);
+  // one under way (false, the session unchanged). The preparation removes the pieces of at most
+  // `remove_pieces_up_to` faces (0: none; PrepareOptions::remove_pieces_up_to), the largest kept.
+  bool open(const std::filesystem::path& path, Progress* progress = nullptr,
+            std::size_t remove_pieces_up_to = 0);
   // Starts over on `mesh` (named `name` in the UI), taken as it is: holes found, nothing stitched
   // or welded (open() prepares a file's mesh as the command-line tool does).
   void load(Mesh mesh, std::string name);
@@ -107,6 +109,10 @@ class Session {
   bool modified() const { return revision_ != saved_revision_; }
 
   const std::string& name() const { return name_; }
+  // The lone triangles and small pieces the preparation found beside the surface (prepare.h):
+  // "Remove small pieces" opens the file again without those of at most
+  // pieces().largest_small_piece faces.
+  const PieceCounts& pieces() const { return pieces_; }
   const Mesh& mesh() const { return state_->mesh; }
   const std::vector<Hole>& holes() const { return holes_; }
   // Whether loop `hole_id` looks like the border of an open surface (borders.h).
@@ -261,6 +267,7 @@ class Session {
   void revised();
 
   std::string name_;
+  PieceCounts pieces_;
   // The mesh as loaded, and the one the log makes of it with every hole's fill: shared, not
   // copied, with the checkpoints that keep them (a million-face mesh is about 100 MB).
   std::shared_ptr<const MeshState> loaded_ = std::make_shared<const MeshState>();

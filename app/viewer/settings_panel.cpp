@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "background.h"
 #include "holefill/cores.h"
 #include "widgets.h"
 
@@ -28,6 +29,28 @@ void threads_setting(Session& session, const Worker& worker) {
       "They run below the window's priority, so the window stays responsive whatever the "
       "number; fewer leave cores to other programs. The result is the same whatever the number",
       worker.busy() ? "The work under way reads it: wait for it, or cancel it (Esc)" : "");
+}
+
+void remove_pieces_button(Session& session, FileActions& files, Worker& worker) {
+  const PieceCounts& pieces = session.pieces();
+  if (pieces.lone_triangles + pieces.small_pieces == 0) return;
+  std::string why_not;
+  if (files.opened_path().empty()) {
+    why_not = "The mesh was read from no file";
+  } else if (!session.log().empty()) {
+    why_not = "Removing them opens the file again, without the fills: reset or undo them first";
+  }
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!why_not.empty() || worker.busy());
+  if (ImGui::Button("Remove small pieces")) {
+    start_open(worker, session, files, files.opened_path(), pieces.largest_small_piece);
+  }
+  ImGui::EndDisabled();
+  const std::string what = "Open " + files.opened_path().filename().string() +
+                           " again without the pieces of at most " +
+                           std::to_string(pieces.largest_small_piece) +
+                           " faces beside the surface (the largest piece is kept)";
+  tooltip(what.c_str(), why_not);
 }
 
 }  // namespace holefill::viewer

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <numbers>
 
 #include "valence_bins.h"
 
@@ -66,6 +69,37 @@ TEST(HoleTable, FiltersByStatus) {
   view = {};
   view.only_failed = true;
   EXPECT_TRUE(arrange(rows, view).empty());
+}
+
+TEST(HoleTable, AFailedHoleNamesThePanelsControlThatHelps) {
+  Session refused;  // a border every cap of which cuts the surface
+  ASSERT_TRUE(refused.open(std::filesystem::path(HOLEFILL_TEST_ASSETS) / "ragged_disk.obj"));
+  refused.select(0);
+  EXPECT_FALSE(refused.fill_selected());
+  EXPECT_EQ(hole_rows(refused)[0].remedy, "\"keep cutting patches\" keeps it");
+  EXPECT_EQ(hole_rows(refused)[1].remedy, "");
+  // 20 lone triangles around one vertex: one loop through it 20 times, refused (the core's
+  // kMaxVertexPasses is 16); the triangles are small pieces, so the button shows.
+  const auto file = std::filesystem::temp_directory_path() / "holefill_hole_table_fan.obj";
+  {
+    std::ofstream out(file);
+    out << "v 0 0 0\n";
+    for (int i = 0; i < 20; ++i) {
+      const double a = 2.0 * std::numbers::pi * i / 20, b = 2.0 * std::numbers::pi * (i + 0.5) / 20;
+      out << "v " << std::cos(a) << " " << std::sin(a) << " " << 0.01 * (i % 7) << "\nv "
+          << std::cos(b) << " " << std::sin(b) << " " << 0.01 * (i % 5) << "\n";
+    }
+    for (int i = 0; i < 20; ++i) out << "f 1 " << 2 + 2 * i << " " << 3 + 2 * i << "\n";
+  }
+  Session fan;
+  ASSERT_TRUE(fan.open(file)) << fan.notice().text;
+  std::filesystem::remove(file);
+  ASSERT_EQ(fan.holes().size(), 1u);
+  fan.select(0);
+  EXPECT_FALSE(fan.fill_selected());
+  EXPECT_EQ(fan.fill(0).failure.kind, FailureKind::VertexPassedTooOften) << fan.fill(0).failure;
+  EXPECT_EQ(hole_rows(fan)[0].remedy, "\"Remove small pieces\" removes the pieces that meet there");
+  EXPECT_GT(fan.pieces().lone_triangles, 0u);
 }
 
 TEST(ValenceBins, OutliersFallInTheEndBinsAndEveryVertexCounts) {

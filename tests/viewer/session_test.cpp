@@ -45,6 +45,31 @@ TEST(Session, StitchesSeamsWhenItOpensAMesh) {
       << session.notice().text;
 }
 
+TEST(Session, SaysThatRemoveSmallPiecesRemovesALoneTriangleAndOpensWithoutIt) {
+  // A closed tetrahedron and a lone triangle beside it.
+  const auto file = std::filesystem::temp_directory_path() / "holefill_session_pieces.obj";
+  std::ofstream(file) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 5 0 0\nv 6 0 0\nv 5 1 0\n"
+                         "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\nf 5 6 7\n";
+  Session session;
+  ASSERT_TRUE(session.open(file)) << session.notice().text;
+  const std::string told = session.notice().text;
+  // The panel's button, not a flag of another program.
+  EXPECT_NE(told.find("1 lone triangle beside the surface, of at most 1 face; \"Remove small "
+                      "pieces\" removes them"),
+            std::string::npos)
+      << told;
+  EXPECT_EQ(told.find("--"), std::string::npos) << told;
+  EXPECT_EQ(session.pieces().lone_triangles, 1u);
+  EXPECT_EQ(session.pieces().largest_small_piece, 1u);
+  // What the button does: the file opened again without pieces of at most that many faces.
+  ASSERT_TRUE(session.open(file, nullptr, session.pieces().largest_small_piece));
+  std::filesystem::remove(file);
+  EXPECT_EQ(session.mesh().n_faces(), 4u);
+  EXPECT_EQ(session.pieces().lone_triangles + session.pieces().small_pieces, 0u);
+  EXPECT_NE(session.notice().text.find("removed 1 pieces of at most 1 faces"), std::string::npos)
+      << session.notice().text;
+}
+
 TEST(Session, StagesRunInOrderOnTheSelectedHole) {
   Session session = bunny_session();
   session.select(2);
