@@ -125,7 +125,7 @@ TEST(ThreadCount, AHoleFilledAloneIsPlannedOnTheThreadsGiven) {
     } else {
       EXPECT_FALSE(fill_hole(mesh, *hole, options).failed());
     }
-    return mesh_to_bytes(mesh, "filled.obj");
+    return mesh_to_bytes(mesh, "filled.obj", 1);
   };
   for (const bool stepped : {true, false}) {
     const std::string one = filled_alone(1, stepped);
@@ -169,7 +169,8 @@ TEST(ThreadCount, TheViewersSettingBoundsOpeningFillingAndReplaying) {
     EXPECT_TRUE(session.fill_all(200)) << session.notice().text;
     EXPECT_TRUE(session.undo());
     EXPECT_TRUE(session.redo());
-    return std::pair{mesh_to_bytes(session.mesh(), "viewer.obj"), thread_counts()};
+    const ThreadCounts counts = thread_counts();  // the session's, not this writing's
+    return std::pair{mesh_to_bytes(session.mesh(), "viewer.obj"), counts};
   };
   const auto [one, on_one] = worked(1);
   EXPECT_EQ(on_one.started, 0u);
