@@ -33,7 +33,8 @@ std::vector<std::pair<int, Box>> many_boxes(int count) {
   return boxes;
 }
 
-std::vector<int> scanned(const std::vector<std::pair<int, Box>>& boxes, const Box& box) {
+std::vector<int> overlapping_by_scan(const std::vector<std::pair<int, Box>>& boxes,
+                                     const Box& box) {
   std::vector<int> ids;
   for (const auto& [id, b] : boxes) {
     if (b.overlaps(box)) ids.push_back(id);
@@ -56,7 +57,7 @@ TEST(FaceGrid, BuiltOnOneTwoThreeOrMoreThreadsThanChunksFindsWhatAScanFinds) {
     for (const Box& box : lookups) {
       const auto near = grid.near(box);
       found += near.size();
-      ASSERT_EQ(near, scanned(boxes, box)) << threads << " threads";
+      ASSERT_EQ(near, overlapping_by_scan(boxes, box)) << threads << " threads";
     }
     EXPECT_GT(found, 40000u);
   }
