@@ -314,7 +314,7 @@ StitchReport stitch_borders(Mesh& mesh, const StitchOptions& options) {
   const Matches matches = matching_boundary_edges(mesh, index, tolerance, threads);
   // An edge that already has a partner end to end is stitched to it, not split.
   std::vector<detail::TJunction> junctions =
-      detail::find_t_junctions(mesh, index, tolerance, matches.on_another);
+      detail::find_t_junctions(mesh, index, tolerance, matches.on_another, threads);
   // A junction whose new vertex could not be merged (its stitch would not be clean) is dropped
   // and the rest tried again; each try drops at least one, and the tries are bounded because
   // each copies the mesh.

@@ -29,9 +29,11 @@ struct TJunction {
 // an edge that already has a partner end to end (the stitch joins that pair; a third sheet's
 // vertex on it does not make a crack).
 // `index` is the mesh's (boundary_points.h); `with_partner` lists, in increasing order, the
-// boundary halfedges that already lie on another end to end (the stitch's matching).
+// boundary halfedges that already lie on another end to end (the stitch's matching). Searches
+// on up to `threads` threads; the junctions are the same on any number.
 std::vector<TJunction> find_t_junctions(const Mesh& mesh, const BoundaryIndex& index,
-                                        double tolerance, const std::vector<int>& with_partner);
+                                        double tolerance, const std::vector<int>& with_partner,
+                                        unsigned threads = 1);
 
 // Splits each junction's edge at a new vertex placed exactly on the junction's vertex, which the
 // stitch then merges into it (the new vertex has the higher index, so the junction's vertex is

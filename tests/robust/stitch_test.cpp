@@ -6,6 +6,7 @@
 #include <cstring>
 #include <map>
 #include <numbers>
+#include <tuple>
 
 #include "dirty_meshes.h"
 #include "holefill/holes.h"
@@ -306,6 +307,33 @@ TEST_F(Stitch, ABoxWhoseSidesWereTessellatedApartClosesAtItsTJunctions) {
     EXPECT_EQ(report.vertices_merged, box.points.size() - distinct);
     EXPECT_EQ(mesh.n_faces(), box.faces.size() + report.t_junctions);
   }
+}
+
+// The T-junctions are searched in blocks of halfedges on the threads given: the box of rows of 41
+// and 60 points (about 120,000 halfedges, several blocks) stitches into the same mesh on any
+// number of threads, face for face.
+TEST_F(Stitch, TJunctionsAreTheSameOnOneTwoThreeAndManyThreads) {
+  const std::array<int, 6> sides{2, 41, 60, 2, 41, 60};
+  const Soup box = box_of_separate_faces(sides);
+  auto stitched = [&](unsigned threads) {
+    Mesh mesh = load(box);
+    StitchOptions options;
+    options.threads = threads;
+    const StitchReport report = stitch_borders(mesh, options);
+    std::vector<double> positions;
+    for (const auto v : mesh.vertices()) {
+      positions.insert(positions.end(), mesh.point(v).data(), mesh.point(v).data() + 3);
+    }
+    std::vector<int> corners;
+    for (const auto f : mesh.faces()) {
+      for (const auto v : mesh.fv_range(f)) corners.push_back(v.idx());
+    }
+    return std::tuple(report.t_junctions, report.edges_stitched, positions, corners);
+  };
+  const auto one = stitched(1);
+  ASSERT_EQ(std::get<0>(one), lone_points_on_box_edges(box, sides));
+  ASSERT_GT(load(box).n_halfedges(), std::size_t{1} << 15);  // more than one block
+  for (const unsigned threads : {2u, 3u, 64u}) EXPECT_EQ(stitched(threads), one) << threads;
 }
 
 // Two unit squares side by side; the left one has a vertex halfway up the edge they share
