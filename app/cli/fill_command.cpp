@@ -127,7 +127,7 @@ int run_fill(FillArguments& a, const Streams& streams) {
   }
   const auto fills = a.selection.hole_ids.empty()
                          ? std::vector<HoleFill>{}
-                         : fill_holes(mesh, holes, a.options, a.selection,
+                         : fill_holes(mesh, holes, prepared.islands, a.options, a.selection,
                                       progress ? &progress->progress() : nullptr);
   const std::string unwelded = undo_unused_welds(mesh, prepared.weld);
   if (!unwelded.empty()) streams.err << "holefill: " << a.input << ": " << unwelded << "\n";

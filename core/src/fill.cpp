@@ -435,9 +435,15 @@ StageRun detail::advance_unscaled(Mesh& mesh, const std::vector<const Hole*>& lo
 std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
                                  const FillOptions& options, const HoleSelection& selection,
                                  Progress* progress) {
+  return fill_holes(mesh, holes, find_islands(mesh, holes, options.islands), options, selection,
+                    progress);
+}
+
+std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
+                                 const IslandMap& islands, const FillOptions& options,
+                                 const HoleSelection& selection, Progress* progress) {
   std::vector<LoopGroup> chosen;
-  for (auto& group : group_loops(mesh, holes, find_islands(mesh, holes, options.islands),
-                                 selection.bridges, options.join)) {
+  for (auto& group : group_loops(mesh, holes, islands, selection.bridges, options.join)) {
     if (detail::selects(selection, group, holes)) chosen.push_back(std::move(group));
   }
   for (const auto& group : chosen) {

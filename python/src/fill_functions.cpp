@@ -86,9 +86,10 @@ py::object fill(MeshObject& object, py::object holes, py::object progress,
     report.faces_before = mesh.n_faces();
     report.holes_before = prepared.holes.size();
     if (a.selection.hole_ids.empty()) a.selection.hole_ids = prepared.ids_to_fill;
-    const auto fills = a.selection.hole_ids.empty() ? std::vector<HoleFill>{}
-                                                    : fill_holes(mesh, prepared.holes, a.options,
-                                                                 a.selection, watcher.progress());
+    const auto fills = a.selection.hole_ids.empty()
+                           ? std::vector<HoleFill>{}
+                           : fill_holes(mesh, prepared.holes, prepared.islands, a.options,
+                                        a.selection, watcher.progress());
     const std::string unwelded = undo_unused_welds(mesh, prepared.weld);
     if (!unwelded.empty()) notes += object.name + ": " + unwelded + "\n";
     ++object.version;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -167,6 +168,32 @@ TEST(Islands, FillsAroundThreeIslandsOnASphere) {
   ASSERT_EQ(connected_components(before), 4u);
   Mesh after;
   fill_and_check_closed(before, after, 3);
+}
+
+// The islands found beforehand (as preparing a mesh finds them) and handed to fill_holes give the
+// fill that finding them inside gives, vertex for vertex and face for face.
+TEST(Islands, IslandsFoundBeforehandGiveTheSameFill) {
+  const Mesh before = cut_around_islands(
+      make_blob(4, unit_radius), {kNorth, 0.85},
+      {{tilted(0.45, 0.0), 0.17}, {tilted(0.45, 2.1), 0.17}, {tilted(0.45, 4.2), 0.17}});
+  const auto holes = find_holes(before);
+  const FillOptions options;
+  const IslandMap islands = find_islands(before, holes, options.islands);
+  ASSERT_EQ(std::count(islands.outer.begin(), islands.outer.end(), -1), 1);  // three islands
+  Mesh found_inside = before, found_before = before;
+  const auto inside = fill_holes(found_inside, holes, options);
+  const auto handed = fill_holes(found_before, holes, islands, options);
+  ASSERT_EQ(handed.size(), 1u);
+  EXPECT_EQ(handed[0].joined_holes, inside[0].joined_holes);
+  ASSERT_EQ(found_before.n_vertices(), found_inside.n_vertices());
+  ASSERT_EQ(found_before.n_faces(), found_inside.n_faces());
+  for (const auto v : found_inside.vertices()) {
+    EXPECT_EQ(found_before.point(v), found_inside.point(v));
+  }
+  for (const auto f : found_inside.faces()) {
+    auto a = found_inside.cfv_iter(f), b = found_before.cfv_iter(f);
+    for (int corner = 0; corner < 3; ++corner, ++a, ++b) EXPECT_EQ(*a, *b);
+  }
 }
 
 TEST(Islands, FillsAroundTwoIslandsOnABlobAsCloseAsAnOrdinaryHole) {

@@ -158,4 +158,12 @@ std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
                                  const FillOptions& options, const HoleSelection& selection = {},
                                  Progress* progress = nullptr);
 
+// As above, with the holes' islands already found: `islands` must be
+// find_islands(mesh, holes, options.islands) for this mesh as it is (PreparedMesh::islands, when
+// the mesh was prepared with these options and not changed since), which spares finding them
+// again (serial work: a tenth of what stays on one thread when 20,000 holes are filled on two).
+std::vector<HoleFill> fill_holes(Mesh& mesh, const std::vector<Hole>& holes,
+                                 const IslandMap& islands, const FillOptions& options,
+                                 const HoleSelection& selection = {}, Progress* progress = nullptr);
+
 }  // namespace holefill
